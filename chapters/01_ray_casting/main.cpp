@@ -1,0 +1,86 @@
+// Chapter 01's program: renders the figure (discs over a checkered floor) and, with --sweep,
+// measures what samples per pixel cost and buy.
+#include "01_ray_casting/figure.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/trade.hpp"
+
+#include <iostream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    float fov = ch01::figure_vfov_degrees;
+    bool sweep = false;
+    int reference_spp = 1024;
+    int repeat = 3;
+    std::string csv = "01_ray_casting.csv";
+};
+
+RenderSettings settings_for(const Options& o, int spp)
+{
+    RenderSettings s;
+    s.width = o.common.width;
+    s.height = o.common.height;
+    s.spp = spp;
+    s.threads = o.common.threads;
+    s.seed = o.common.seed;
+    return s;
+}
+
+Image render_with(const Options& o, int spp)
+{
+    return ch01::render_figure(settings_for(o, spp), o.fov);
+}
+
+// Samples per pixel against time and error: RMSE in linear RGB against a many-sample render.
+void sweep(const Options& o)
+{
+    std::cerr << "rendering the reference at " << o.reference_spp << " spp...\n";
+    const Image reference = render_with(o, o.reference_spp);
+    TradeTable table{"01_ray_casting", "rmse_linear_rgb_vs_" + std::to_string(o.reference_spp) + "spp", {}};
+    for (const int spp : {1, 4, 16, 64}) {
+        Image image;
+        reset_counters();
+        render_with(o, spp);
+        const std::uint64_t rays = total_rays(total_counts());
+        const double seconds = median_seconds(o.repeat, [&] { image = render_with(o, spp); });
+        table.rows.push_back({"spp", std::to_string(spp), seconds, rays, rmse(image, reference)});
+    }
+    print_trade_table(std::cout, table);
+    write_trade_csv(o.csv, table);
+    std::cout << "wrote " << o.csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("01_ray_casting", [&] {
+        Options o;
+        o.common.out = "01_ray_casting.png";
+        CommandLine cli("01_ray_casting", "Ray casting: a ray per pixel, the nearest disc wins.");
+        add_common_options(cli, o.common);
+        cli.option("--fov", o.fov, "vertical field of view in degrees", 0.0f, 180.0f);
+        cli.flag("--sweep", o.sweep, "measure samples per pixel (1, 4, 16, 64) against time and error");
+        cli.option("--reference-spp", o.reference_spp, "samples per pixel of the sweep's reference", 1, 65536);
+        cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        if (o.sweep) {
+            sweep(o);
+            return 0;
+        }
+        const Timer timer;
+        const Image image = render_with(o, o.common.spp);
+        const double seconds = timer.seconds();
+        write_png(o.common.out, image);
+        if (o.common.stats)
+            print_stats(std::cout, total_counts(), seconds);
+        return 0;
+    });
+}

@@ -1,0 +1,52 @@
+# The two tracks (DESIGN.md): each chapter's exercise and solution build into their own object
+# library, ex_NN and sol_NN, defining the same functions. A program or test for chapter N links one
+# library per chapter 1..N.
+
+foreach(chapter IN LISTS RT_CHAPTERS)
+  string(SUBSTRING "${chapter}" 0 2 nn)
+  add_library(ex_${nn} OBJECT "${RT_EXERCISES_DIR}/${chapter}.cpp")
+  target_link_libraries(ex_${nn} PUBLIC rt_common)
+  # A stub's parameters are unused until the student writes the answer: no warning for that.
+  target_compile_options(ex_${nn} PRIVATE -Wno-unused-parameter)
+  if(RT_HAVE_SOLUTIONS)
+    add_library(sol_${nn} OBJECT "${CMAKE_SOURCE_DIR}/solutions/${chapter}.cpp")
+    target_link_libraries(sol_${nn} PUBLIC rt_common)
+  endif()
+endforeach()
+
+# rt_chapter_libraries(<out> <nn> <track>): the libraries a program or test of chapter <nn> links.
+# track `figures`: the solutions of chapters 1..nn (the student's files in a handout).
+# track `graded`: the student's chapter nn, and the solutions of the chapters before it when they
+# exist, so a mistake in chapter 2 costs points in chapter 2 only.
+function(rt_chapter_libraries out nn track)
+  set(libs "")
+  foreach(chapter IN LISTS RT_CHAPTERS)
+    string(SUBSTRING "${chapter}" 0 2 k)
+    if(RT_HAVE_SOLUTIONS AND (track STREQUAL "figures" OR k LESS nn))
+      list(APPEND libs sol_${k})
+    else()
+      list(APPEND libs ex_${k})
+    endif()
+    if(k STREQUAL nn)
+      break()
+    endif()
+  endforeach()
+  set(${out} ${libs} PARENT_SCOPE)
+endfunction()
+
+# Each chapter's program renders its figure; the `figures` target renders them all.
+set(figure_files "")
+foreach(chapter IN LISTS RT_CHAPTERS)
+  string(SUBSTRING "${chapter}" 0 2 nn)
+  add_executable(${chapter} "${CMAKE_SOURCE_DIR}/chapters/${chapter}/main.cpp")
+  rt_chapter_libraries(libs ${nn} figures)
+  target_link_libraries(${chapter} PRIVATE ${libs})
+  set(figure "${RT_FIGURES_DIR}/${chapter}.png")
+  add_custom_command(OUTPUT "${figure}"
+    COMMAND ${chapter} --out "${figure}"
+    DEPENDS ${chapter}
+    COMMENT "Rendering ${figure}"
+    VERBATIM)
+  list(APPEND figure_files "${figure}")
+endforeach()
+add_custom_target(figures DEPENDS ${figure_files})

@@ -1,0 +1,135 @@
+#include "common/cli.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace rt {
+
+CommandLine::CommandLine(std::string program, std::string summary)
+    : program_(std::move(program)), summary_(std::move(summary))
+{
+}
+
+void CommandLine::flag(const std::string& name, bool& target, const std::string& help)
+{
+    entries_.push_back({name, "", help, false, [&target](const std::string&) { target = true; }});
+}
+
+template <class Int>
+static Int parse_whole(const std::string& name, const std::string& text)
+{
+    Int value{};
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec == std::errc::result_out_of_range)
+        throw InputError(name + " is out of range: '" + text + "'");
+    if (ec != std::errc() || ptr != end)
+        throw InputError(name + " takes a whole number, got '" + text + "'");
+    return value;
+}
+
+void CommandLine::option(const std::string& name, int& target, const std::string& help, int min, int max)
+{
+    entries_.push_back({name, "N", help, true, [&target, name, min, max](const std::string& text) {
+                            const int value = parse_whole<int>(name, text);
+                            if (value < min || value > max)
+                                throw InputError(name + " must be between " + std::to_string(min) + " and " +
+                                                 std::to_string(max) + ", got " + text);
+                            target = value;
+                        }});
+}
+
+void CommandLine::option(const std::string& name, std::uint64_t& target, const std::string& help)
+{
+    entries_.push_back({name, "N", help, true, [&target, name](const std::string& text) {
+                            target = parse_whole<std::uint64_t>(name, text);
+                        }});
+}
+
+void CommandLine::option(const std::string& name, float& target, const std::string& help, float above, float below)
+{
+    entries_.push_back({name, "X", help, true, [&target, name, above, below](const std::string& text) {
+                            char* end = nullptr;
+                            const float value = std::strtof(text.c_str(), &end);
+                            if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+                                throw InputError(name + " takes a finite number, got '" + text + "'");
+                            if (!(value > above && value < below)) {
+                                std::ostringstream message;
+                                message << name << " must lie strictly between " << above << " and " << below
+                                        << ", got " << text;
+                                throw InputError(message.str());
+                            }
+                            target = value;
+                        }});
+}
+
+void CommandLine::option(const std::string& name, std::string& target, const std::string& help)
+{
+    entries_.push_back({name, "TEXT", help, true, [&target, name](const std::string& text) {
+                            if (text.empty())
+                                throw InputError(name + " takes a non-empty value");
+                            target = text;
+                        }});
+}
+
+bool CommandLine::parse(int argc, const char* const* argv, std::ostream& out)
+{
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if (arg == "--help" || arg == "-h") {
+            print_usage(out);
+            return false;
+        }
+        const Entry* found = nullptr;
+        for (const Entry& e : entries_)
+            if (e.name == arg)
+                found = &e;
+        if (!found)
+            throw InputError("unknown option '" + arg + "' (try --help)");
+        if (!found->takes_value) {
+            found->set("");
+            continue;
+        }
+        if (k + 1 >= argc)
+            throw InputError(arg + " needs a value");
+        found->set(argv[++k]);
+    }
+    return true;
+}
+
+void CommandLine::print_usage(std::ostream& out) const
+{
+    out << "usage: " << program_ << " [options]\n" << summary_ << "\n\noptions:\n";
+    for (const Entry& e : entries_) {
+        const std::string left = e.name + (e.takes_value ? " " + e.value_hint : "");
+        out << "  " << std::left << std::setw(22) << left << e.help << '\n';
+    }
+    out << "  " << std::left << std::setw(22) << "--help" << "print this and exit\n";
+}
+
+void add_common_options(CommandLine& cli, CommonOptions& o)
+{
+    cli.option("--width", o.width, "image width in pixels", 1, 16384);
+    cli.option("--height", o.height, "image height in pixels", 1, 16384);
+    cli.option("--spp", o.spp, "samples per pixel (1 samples the pixel centre)", 1, 65536);
+    cli.option("--threads", o.threads, "render threads (0: all cores); the image does not change", 0, 1024);
+    cli.option("--seed", o.seed, "seed of the per-pixel random streams");
+    cli.option("--out", o.out, "where to write the PNG");
+    cli.flag("--stats", o.stats, "print what the render did, one key=value per line");
+}
+
+int run_program(const std::string& program, const std::function<int()>& body)
+{
+    try {
+        return body();
+    } catch (const InputError& e) {
+        std::cerr << program << ": " << e.what() << '\n';
+        return exit_bad_input;
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,58 @@
+// The programs' small command line: `--name value` options and `--name` flags, checked as they are
+// read. Anything wrong (an unknown flag, a missing or malformed value, a value out of range) throws
+// InputError with one line naming the flag and the problem; run_program turns it into exit status 2.
+#pragma once
+
+#include "common/error.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+class CommandLine {
+public:
+    CommandLine(std::string program, std::string summary);
+
+    void flag(const std::string& name, bool& target, const std::string& help);
+    // Whole numbers in [min, max].
+    void option(const std::string& name, int& target, const std::string& help, int min, int max);
+    void option(const std::string& name, std::uint64_t& target, const std::string& help);
+    // Finite numbers in the open interval (above, below).
+    void option(const std::string& name, float& target, const std::string& help, float above, float below);
+    void option(const std::string& name, std::string& target, const std::string& help);
+
+    // Returns false when --help was asked for (the usage is then printed to `out`).
+    bool parse(int argc, const char* const* argv, std::ostream& out);
+    void print_usage(std::ostream& out) const;
+
+private:
+    struct Entry {
+        std::string name, value_hint, help;
+        bool takes_value;
+        std::function<void(const std::string&)> set;  // throws InputError on a bad value
+    };
+    std::string program_, summary_;
+    std::vector<Entry> entries_;
+};
+
+// The options every chapter program has.
+struct CommonOptions {
+    int width = 640;
+    int height = 360;
+    int spp = 1;
+    int threads = 0;
+    std::uint64_t seed = 1;
+    std::string out;  // the figure's path; each program sets its default
+    bool stats = false;
+};
+
+void add_common_options(CommandLine& cli, CommonOptions& options);
+
+// Runs a program's body, turning InputError into "program: message" on stderr and exit status 2.
+int run_program(const std::string& program, const std::function<int()>& body);
+
+}  // namespace rt

@@ -1,0 +1,17 @@
+// The kit's two error paths (STYLE.md, habit 10): `assert` for the kit's own assumptions, and an
+// InputError for bad input, which the programs turn into one line and exit status 2.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace rt {
+
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Exit status for bad input (an unknown flag, an impossible value, a malformed file).
+constexpr int exit_bad_input = 2;
+
+}  // namespace rt

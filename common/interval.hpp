@@ -1,0 +1,24 @@
+// The range of t a query accepts. Queries shrink `max` to the closest hit found so far,
+// which is how "if (object.distance < distance)" of the slides' QueryScene reads with an interval.
+#pragma once
+
+#include <limits>
+
+namespace rt {
+
+constexpr float infinity = std::numeric_limits<float>::infinity();
+
+// Why 1e-4: chapter 01's rays start at the eye, never on a surface, so any small positive bound
+// works; chapter 04 measures what a fixed bound like this costs for rays that start on a surface.
+constexpr float t_min_default = 1e-4f;
+
+struct Interval {
+    float min = t_min_default;
+    float max = infinity;
+
+    // Open at both ends: a hit exactly at min or max is outside, so a ray never re-finds the
+    // closest hit it already holds (max) nor a surface it starts on (min).
+    bool surrounds(float t) const { return min < t && t < max; }
+};
+
+}  // namespace rt

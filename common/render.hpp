@@ -1,0 +1,78 @@
+// The parallel render loop: every pixel, `spp` samples each, averaged.
+//
+// The image is byte-identical at any thread count: a pixel's samples come from its own random
+// stream (random.hpp) and are summed in a fixed order, so neither the schedule nor the number of
+// threads can change a value.
+#pragma once
+
+#include "common/image.hpp"
+#include "common/progress.hpp"
+#include "common/random.hpp"
+#include "common/stats.hpp"
+
+#include <cstdint>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace rt {
+
+struct RenderSettings {
+    int width = 320;
+    int height = 240;
+    int spp = 1;              // samples per pixel: 1 samples the pixel centre, more are spread at random
+    int threads = 0;          // 0: as many as OpenMP offers
+    std::uint64_t seed = 1;   // the same seed gives the same image
+    bool show_progress = true;
+};
+
+// Where sample s of pixel (i, j) lands, in the pixel coordinates of the slides' window transform:
+// pixel centres at whole numbers, pixel (i, j) covering [i - 0.5, i + 0.5] x [j - 0.5, j + 0.5].
+struct PixelSample {
+    float x, y;
+};
+
+inline PixelSample sample_position(int i, int j, int spp, Rng& rng)
+{
+    if (spp == 1)
+        return {static_cast<float>(i), static_cast<float>(j)};
+    const float dx = rng.next_float() - 0.5f;
+    const float dy = rng.next_float() - 0.5f;
+    return {static_cast<float>(i) + dx, static_cast<float>(j) + dy};
+}
+
+// `radiance(x, y, rng)` returns the colour seen through pixel position (x, y); it may draw more
+// numbers from rng (for lens or light samples in later chapters).
+template <class Radiance>
+Image render(const RenderSettings& s, const Radiance& radiance)
+{
+    Image image(s.width, s.height);
+    Progress progress("rendering", s.show_progress ? s.height : 0);
+#ifdef _OPENMP
+    const int threads = s.threads > 0 ? s.threads : omp_get_max_threads();
+#pragma omp parallel num_threads(threads)
+#endif
+    {
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (int j = 0; j < s.height; ++j) {
+            for (int i = 0; i < s.width; ++i) {
+                Rng rng = pixel_rng(s.seed, i, j, s.width);
+                color sum(0.0f);
+                for (int k = 0; k < s.spp; ++k) {
+                    const PixelSample ps = sample_position(i, j, s.spp, rng);
+                    sum += radiance(ps.x, ps.y, rng);
+                }
+                image.at(i, j) = sum / static_cast<float>(s.spp);
+            }
+            if (s.show_progress)
+                progress.tick();
+        }
+        flush_counters();
+    }
+    return image;
+}
+
+}  // namespace rt

@@ -1,0 +1,57 @@
+#include "common/stats.hpp"
+
+#include <mutex>
+
+namespace rt {
+
+namespace {
+std::mutex totals_mutex;
+Counts totals{};
+}  // namespace
+
+Counts& local_counts()
+{
+    thread_local Counts counts{};
+    return counts;
+}
+
+void flush_counters()
+{
+    Counts& mine = local_counts();
+    const std::lock_guard<std::mutex> lock(totals_mutex);
+    for (size_t k = 0; k < mine.size(); ++k) {
+        totals[k] += mine[k];
+        mine[k] = 0;
+    }
+}
+
+Counts total_counts()
+{
+    flush_counters();
+    const std::lock_guard<std::mutex> lock(totals_mutex);
+    return totals;
+}
+
+void reset_counters()
+{
+    local_counts() = Counts{};
+    const std::lock_guard<std::mutex> lock(totals_mutex);
+    totals = Counts{};
+}
+
+std::uint64_t total_rays(const Counts& counts)
+{
+    return counts[static_cast<size_t>(Counter::primary_rays)] + counts[static_cast<size_t>(Counter::shadow_rays)] +
+           counts[static_cast<size_t>(Counter::reflected_rays)] + counts[static_cast<size_t>(Counter::refracted_rays)];
+}
+
+void print_stats(std::ostream& out, const Counts& counts, double seconds)
+{
+    for (size_t k = 0; k < counts.size(); ++k)
+        out << counter_names[k] << '=' << counts[k] << '\n';
+    out << "rays=" << total_rays(counts) << '\n';
+    out << "seconds=" << seconds << '\n';
+    out << "rays_per_second=" << (seconds > 0.0 ? static_cast<double>(total_rays(counts)) / seconds : 0.0) << '\n';
+}
+
+}  // namespace rt

@@ -1,0 +1,58 @@
+// Counters (rays by kind, intersection tests) and a timer, for `--stats` and the trade tables.
+//
+// Each thread counts into its own thread_local block, with no atomics on the hot path, and adds it
+// to the global totals once, when its share of a render is done (flush_counters).
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <ostream>
+
+namespace rt {
+
+enum class Counter {
+    primary_rays,
+    shadow_rays,
+    reflected_rays,
+    refracted_rays,
+    intersection_tests,
+    count_  // the number of counters, not a counter
+};
+
+constexpr std::array<const char*, static_cast<size_t>(Counter::count_)> counter_names = {
+    "rays_primary", "rays_shadow", "rays_reflected", "rays_refracted", "intersection_tests"};
+
+using Counts = std::array<std::uint64_t, static_cast<size_t>(Counter::count_)>;
+
+// This thread's running counts.
+Counts& local_counts();
+
+inline void count(Counter c, std::uint64_t n = 1) { local_counts()[static_cast<size_t>(c)] += n; }
+
+// Adds this thread's counts to the totals and zeroes them.
+void flush_counters();
+
+// The totals flushed so far (and this thread's unflushed counts), and a way to start over.
+Counts total_counts();
+void reset_counters();
+
+// Every ray of every kind.
+std::uint64_t total_rays(const Counts& counts);
+
+class Timer {
+public:
+    Timer() : start_(std::chrono::steady_clock::now()) {}
+    double seconds() const
+    {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_;
+};
+
+// The `--stats` format: one key=value per line, counters first, then seconds and rays_per_second.
+void print_stats(std::ostream& out, const Counts& counts, double seconds);
+
+}  // namespace rt

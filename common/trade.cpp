@@ -1,0 +1,75 @@
+#include "common/trade.hpp"
+
+#include "common/error.hpp"
+#include "common/stats.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace rt {
+
+double rmse(const Image& a, const Image& b)
+{
+    assert(a.width == b.width && a.height == b.height);
+    double sum = 0.0;
+    for (size_t p = 0; p < a.pixels.size(); ++p)
+        for (int k = 0; k < 3; ++k) {
+            const double d = static_cast<double>(a.pixels[p][k]) - static_cast<double>(b.pixels[p][k]);
+            sum += d * d;
+        }
+    return std::sqrt(sum / (3.0 * static_cast<double>(a.pixels.size())));
+}
+
+double median_seconds(int repeats, const std::function<void()>& work)
+{
+    std::vector<double> seconds;
+    for (int k = 0; k < std::max(1, repeats); ++k) {
+        const Timer timer;
+        work();
+        seconds.push_back(timer.seconds());
+    }
+    std::sort(seconds.begin(), seconds.end());
+    const size_t n = seconds.size();
+    return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+}
+
+static double rays_per_second(const TradeRow& row)
+{
+    return row.seconds > 0.0 ? static_cast<double>(row.rays) / row.seconds : 0.0;
+}
+
+void print_trade_table(std::ostream& out, const TradeTable& table)
+{
+    out << table.chapter << ": error is " << table.error_metric << '\n';
+    out << std::left << std::setw(10) << table.rows.front().knob << std::right << std::setw(12) << "seconds"
+        << std::setw(14) << "rays" << std::setw(16) << "rays/second" << std::setw(14) << "error" << '\n';
+    for (const TradeRow& row : table.rows)
+        out << std::left << std::setw(10) << row.value << std::right << std::fixed << std::setprecision(4)
+            << std::setw(12) << row.seconds << std::setw(14) << row.rays << std::setprecision(0)
+            << std::setw(16) << rays_per_second(row) << std::scientific << std::setprecision(3) << std::setw(14)
+            << row.error << std::defaultfloat << '\n';
+}
+
+void write_trade_csv(const std::string& path, const TradeTable& table)
+{
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty())
+        std::filesystem::create_directories(parent, ec);
+    std::ofstream out(path);
+    if (!out)
+        throw InputError(path + ": cannot write the CSV file");
+    out << "chapter,knob,value,seconds,rays,rays_per_second,error,error_metric\n";
+    out << std::setprecision(6);
+    for (const TradeRow& row : table.rows)
+        out << table.chapter << ',' << row.knob << ',' << row.value << ',' << row.seconds << ',' << row.rays << ','
+            << rays_per_second(row) << ',' << row.error << ',' << table.error_metric << '\n';
+    if (!out)
+        throw InputError(path + ": cannot write the CSV file");
+}
+
+}  // namespace rt

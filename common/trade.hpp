@@ -1,0 +1,41 @@
+// The speed/accuracy trade, measured: each chapter program can sweep its own knob and print a
+// table of cost against error, and write it as CSV (DESIGN.md, "Measuring the trade").
+#pragma once
+
+#include "common/image.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct TradeRow {
+    std::string knob;      // what was varied, e.g. "spp"
+    std::string value;     // its value in this row
+    double seconds;        // median of the repeats
+    std::uint64_t rays;    // rays of one run
+    double error;          // against the reference, in the table's metric
+};
+
+struct TradeTable {
+    std::string chapter;
+    std::string error_metric;  // e.g. "rmse_linear_rgb against 1024 spp"
+    std::vector<TradeRow> rows;
+};
+
+// Root mean square difference of two equal-sized images over all channels, in linear RGB.
+double rmse(const Image& a, const Image& b);
+
+// Runs `work` `repeats` times and returns the median wall-clock seconds.
+double median_seconds(int repeats, const std::function<void()>& work);
+
+void print_trade_table(std::ostream& out, const TradeTable& table);
+
+// CSV columns: chapter,knob,value,seconds,rays,rays_per_second,error,error_metric.
+// Throws InputError naming the path when it cannot be written.
+void write_trade_csv(const std::string& path, const TradeTable& table);
+
+}  // namespace rt

@@ -1,0 +1,140 @@
+// EXERCISE 01.2: ray/plane, t = n.(b - u) / n.v.
+#include "01_ray_casting/01_ray_casting.hpp"
+#include "common/random.hpp"
+#include "tests/grader/graded.hpp"
+
+#include <cmath>
+
+using namespace rt;
+using rt::grader::show;
+
+namespace {
+
+const Plane floor_plane{{5, 0, -2}, {0, 1, 0}};
+
+// t in double from the same float inputs: the reference for the float answer.
+double reference_t(const Ray& ray, const Plane& plane)
+{
+    const dvec3 n(plane.n), b(plane.b), u(ray.origin), v(ray.dir);
+    return glm::dot(n, b - u) / glm::dot(n, v);
+}
+
+std::string describe(const Ray& ray, const Plane& plane, Interval range)
+{
+    std::ostringstream s;
+    s << show(ray) << " against the plane through " << show(plane.b) << " with normal " << show(plane.n)
+      << ", range (" << range.min << ", " << range.max << ")";
+    return s.str();
+}
+
+}  // namespace
+
+GRADED_TEST("a ray straight down hits the floor at the eye's height, from either side's normal", "01.2", 2)
+{
+    const Ray ray{{0, 3, 0}, {0, -1, 0}};
+    for (const vec3 n : {vec3(0, 1, 0), vec3(0, -1, 0)}) {
+        const Plane plane{floor_plane.b, n};
+        const std::optional<float> t = hit_plane(ray, plane, Interval{});
+        INFO(describe(ray, plane, Interval{}) << ": got t = " << show(t) << ", expected 3");
+        REQUIRE(t);
+        CHECK(*t == Approx(3.0f).epsilon(1e-6));
+    }
+}
+
+GRADED_TEST("an oblique ray hits where t = n.(b - u) / n.v says, and the point lies on the plane", "01.2", 2)
+{
+    const Ray ray{{1, 2, 3}, glm::normalize(vec3(1, -2, -2))};
+    const Plane plane{{0, 0, 0}, glm::normalize(vec3(0, 1, 0.5f))};
+    const double expected = reference_t(ray, plane);
+    const std::optional<float> t = hit_plane(ray, plane, Interval{});
+    INFO(describe(ray, plane, Interval{}) << ": got t = " << show(t) << ", expected " << expected);
+    REQUIRE(t);
+    CHECK(rt::grader::rel_error(*t, expected) <= 1e-6);
+    CHECK(std::abs(glm::dot(plane.n, ray.at(*t) - plane.b)) <= 1e-5f);
+}
+
+GRADED_TEST("a ray parallel to the plane misses, and one tilted slightly toward it hits far away", "01.2", 2)
+{
+    const Ray parallel{{0, 1, 0}, {1, 0, 0}};
+    const std::optional<float> none = hit_plane(parallel, floor_plane, Interval{});
+    INFO(describe(parallel, floor_plane, Interval{}) << ": got t = " << show(none) << ", expected no hit");
+    CHECK_FALSE(none);
+
+    const Ray tilted{{0, 1, 0}, glm::normalize(vec3(1, -1e-3f, 0))};
+    const double expected = reference_t(tilted, floor_plane);
+    const std::optional<float> t = hit_plane(tilted, floor_plane, Interval{});
+    INFO(describe(tilted, floor_plane, Interval{}) << ": got t = " << show(t) << ", expected " << expected);
+    REQUIRE(t);
+    CHECK(rt::grader::rel_error(*t, expected) <= 1e-6);
+}
+
+GRADED_TEST("only hits strictly inside the range count: not behind the eye, not beyond range.max", "01.2", 2)
+{
+    const Ray down{{0, 3, 0}, {0, -1, 0}};  // meets the floor at t = 3
+    const Ray up{{0, 3, 0}, {0, 1, 0}};     // the floor is behind it, at t = -3
+    struct Case {
+        Ray ray;
+        Interval range;
+        bool hits;
+    };
+    for (const Case& c : {Case{down, {1e-4f, infinity}, true}, Case{down, {2.9f, 3.1f}, true},
+                          Case{down, {1e-4f, 2.0f}, false}, Case{down, {3.5f, infinity}, false},
+                          Case{up, {1e-4f, infinity}, false}}) {
+        const std::optional<float> t = hit_plane(c.ray, floor_plane, c.range);
+        INFO(describe(c.ray, floor_plane, c.range) << ": got t = " << show(t) << ", expected "
+             << (c.hits ? "t = 3" : "no hit"));
+        CHECK(t.has_value() == c.hits);
+        if (t && c.hits)
+            CHECK(*t == Approx(3.0f));
+    }
+}
+
+STABILITY_TEST("nearly parallel rays hit where a double-precision computation says", "01.2", 2)
+{
+    for (double angle = 1e-1; angle >= 1e-7; angle /= 10) {
+        const Ray ray{{0, 1, 0}, glm::normalize(vec3(float(std::cos(angle)), float(-std::sin(angle)), 0.0f))};
+        const double expected = reference_t(ray, floor_plane);
+        const std::optional<float> t = hit_plane(ray, floor_plane, Interval{});
+        INFO(describe(ray, floor_plane, Interval{}) << " (" << angle << " radians above parallel): got t = "
+             << show(t) << ", expected " << expected);
+        REQUIRE(t);
+        CHECK(rt::grader::rel_error(*t, expected) <= 1e-6);
+    }
+}
+
+STABILITY_TEST("grazing rays give a finite t or no hit, never a NaN or an infinity", "01.2", 2)
+{
+    // dir.y = -1e-30 puts the hit at 1e30, still a float; -1e-45 (the smallest subnormal) puts it
+    // beyond the largest float; a ray starting on the plane meets it at t = 0, outside the range.
+    const Ray far{{0, 1, 0}, {1, -1e-30f, 0}};
+    const std::optional<float> t_far = hit_plane(far, floor_plane, Interval{});
+    INFO(describe(far, floor_plane, Interval{}) << ": got t = " << show(t_far) << ", expected about 1e30");
+    REQUIRE(t_far);
+    CHECK(rt::grader::rel_error(*t_far, 1e30) <= 1e-6);
+
+    for (const Ray& ray : {Ray{{0, 1, 0}, {1, -1e-45f, 0}}, Ray{{0, 0, 0}, glm::normalize(vec3(1, -1, 0))},
+                           Ray{{0, 0, 0}, {1, 0, 0}}}) {
+        const std::optional<float> t = hit_plane(ray, floor_plane, Interval{});
+        INFO(describe(ray, floor_plane, Interval{}) << ": got t = " << show(t) << ", expected no hit");
+        CHECK_FALSE(t);
+    }
+}
+
+STABILITY_TEST("a plane behind the eye is never hit, and the same plane ahead always is", "01.2", 2)
+{
+    // 2000 directions over the sphere, from an eye 1 above the floor.
+    Rng rng(7, 0);
+    for (int k = 0; k < 2000; ++k) {
+        const float z = 2.0f * rng.next_float() - 1.0f, phi = 6.2831853f * rng.next_float();
+        const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        const Ray ray{{0, 1, 0}, {s * std::cos(phi), z, s * std::sin(phi)}};
+        if (ray.dir.y == 0.0f)
+            continue;
+        const std::optional<float> t = hit_plane(ray, floor_plane, Interval{});
+        INFO(describe(ray, floor_plane, Interval{}) << ": got t = " << show(t) << ", expected "
+             << (ray.dir.y < 0 ? "a hit at 1 / |dir.y|" : "no hit: the floor is behind"));
+        REQUIRE(t.has_value() == (ray.dir.y < 0.0f));
+        if (t)
+            CHECK(rt::grader::rel_error(*t, reference_t(ray, floor_plane)) <= 1e-6);
+    }
+}

@@ -1,0 +1,10 @@
+# Runs a program and checks its exit status and what it printed.
+#   cmake -D PROGRAM=... -D ARGS="a|b|c" -D STATUS=2 -D MATCH=regex -P expect_exit.cmake
+string(REPLACE "|" ";" args "${ARGS}")
+execute_process(COMMAND "${PROGRAM}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(NOT rc STREQUAL "${STATUS}")
+  message(FATAL_ERROR "${PROGRAM} ${args}: exit status ${rc}, expected ${STATUS}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(NOT "${out}${err}" MATCHES "${MATCH}")
+  message(FATAL_ERROR "${PROGRAM} ${args}: printed\n${out}${err}\nwhich does not match '${MATCH}'")
+endif()

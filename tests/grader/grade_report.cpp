@@ -1,0 +1,55 @@
+// Merges the per-chapter results of a grading run into one points table and the files a course
+// platform reads.
+//
+//   grade_report --json results.json --junit junit.xml RESULTS...
+//
+// A chapter whose results file is missing (its grader did not run to the end) is named, and the
+// report still covers the others.
+#include "tests/grader/points.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+    using namespace rt::grader;
+    std::string json, junit;
+    std::vector<std::string> inputs;
+    for (int k = 1; k < argc; ++k) {
+        const std::string arg = argv[k];
+        if ((arg == "--json" || arg == "--junit") && k + 1 < argc)
+            (arg == "--json" ? json : junit) = argv[++k];
+        else if (arg.rfind("--", 0) == 0) {
+            std::cerr << "grade_report: unknown option '" << arg << "'\n";
+            return 2;
+        } else
+            inputs.push_back(arg);
+    }
+    std::vector<CaseResult> results;
+    int missing = 0;
+    for (const std::string& path : inputs)
+        if (!read_results(path, results)) {
+            std::cerr << "grade_report: " << path << ": no results (did that chapter's grader crash?)\n";
+            ++missing;
+        }
+    print_points_table(std::cout, results);
+    int score = 0, max_score = 0;
+    for (const CaseResult& r : results) {
+        score += r.score;
+        max_score += r.max_score;
+    }
+    std::cout << "  total" << std::setw(20) << score << " / " << max_score << '\n';
+    if (!json.empty()) {
+        if (!write_gradescope_json(json, results))
+            return std::cerr << "grade_report: " << json << ": cannot write\n", 2;
+        std::cout << "wrote " << json << '\n';
+    }
+    if (!junit.empty()) {
+        if (!write_junit_xml(junit, results))
+            return std::cerr << "grade_report: " << junit << ": cannot write\n", 2;
+        std::cout << "wrote " << junit << '\n';
+    }
+    return missing == 0 ? 0 : 1;
+}

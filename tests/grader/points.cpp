@@ -1,0 +1,222 @@
+#include "tests/grader/points.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace rt::grader {
+
+namespace {
+
+std::string chapter_of(const CaseResult& r) { return r.number.substr(0, 2); }
+
+std::string escape_line(const std::string& s)
+{
+    std::string out;
+    for (const char c : s) {
+        if (c == '\\') out += "\\\\";
+        else if (c == '\t') out += "\\t";
+        else if (c == '\n') out += "\\n";
+        else out += c;
+    }
+    return out;
+}
+
+std::string unescape_line(const std::string& s)
+{
+    std::string out;
+    for (size_t k = 0; k < s.size(); ++k) {
+        if (s[k] != '\\' || k + 1 == s.size()) {
+            out += s[k];
+            continue;
+        }
+        const char c = s[++k];
+        out += c == 't' ? '\t' : c == 'n' ? '\n' : c;
+    }
+    return out;
+}
+
+std::string escape_json(const std::string& s)
+{
+    std::ostringstream out;
+    for (const unsigned char c : s) {
+        switch (c) {
+        case '"': out << "\\\""; break;
+        case '\\': out << "\\\\"; break;
+        case '\n': out << "\\n"; break;
+        case '\t': out << "\\t"; break;
+        case '\r': out << "\\r"; break;
+        default:
+            if (c < 0x20)
+                out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+            else
+                out << c;
+        }
+    }
+    return out.str();
+}
+
+std::string escape_xml(const std::string& s)
+{
+    std::string out;
+    for (const char c : s) {
+        if (c == '&') out += "&amp;";
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '"') out += "&quot;";
+        else out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+void print_points_table(std::ostream& out, const std::vector<CaseResult>& results)
+{
+    // number -> (score, max), ordered; chapter totals alongside.
+    std::map<std::string, std::pair<int, int>> by_exercise, by_chapter;
+    for (const CaseResult& r : results) {
+        by_exercise[r.number].first += r.score;
+        by_exercise[r.number].second += r.max_score;
+        by_chapter[chapter_of(r)].first += r.score;
+        by_chapter[chapter_of(r)].second += r.max_score;
+    }
+    out << "\nPoints\n";
+    for (const auto& [chapter, total] : by_chapter) {
+        out << "  chapter " << chapter << std::setw(14) << total.first << " / " << total.second << '\n';
+        for (const auto& [number, points] : by_exercise)
+            if (number.compare(0, 2, chapter) == 0)
+                out << "    " << std::left << std::setw(8) << number << std::right << std::setw(13)
+                    << points.first << " / " << points.second << '\n';
+        for (const CaseResult& r : results)
+            if (chapter_of(r) == chapter && !r.passed)
+                out << "      lost " << r.max_score << " in " << r.number << ": " << r.name << '\n';
+    }
+}
+
+static void write_line(std::ostream& out, const CaseResult& r)
+{
+    out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
+        << escape_line(r.output) << '\n';
+}
+
+bool write_results(const std::string& path, const std::vector<CaseResult>& results)
+{
+    std::ofstream out(path);
+    for (const CaseResult& r : results)
+        write_line(out, r);
+    return static_cast<bool>(out);
+}
+
+bool append_result(const std::string& path, const CaseResult& result)
+{
+    std::ofstream out(path, std::ios::app);
+    write_line(out, result);
+    return static_cast<bool>(out);
+}
+
+bool read_results(const std::string& path, std::vector<CaseResult>& results)
+{
+    std::ifstream in(path);
+    if (!in)
+        return false;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> fields;
+        std::istringstream cols(line);
+        std::string field;
+        while (std::getline(cols, field, '\t'))
+            fields.push_back(unescape_line(field));
+        if (fields.size() < 4)
+            return false;
+        CaseResult r;
+        r.number = fields[0];
+        r.max_score = std::stoi(fields[1]);
+        r.score = std::stoi(fields[2]);
+        r.passed = r.score == r.max_score;
+        r.name = fields[3];
+        r.output = fields.size() > 4 ? fields[4] : "";
+        results.push_back(r);
+    }
+    return true;
+}
+
+bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results)
+{
+    int score = 0;
+    for (const CaseResult& r : results)
+        score += r.score;
+    std::ofstream out(path);
+    out << "{\n  \"score\": " << score << ",\n  \"tests\": [";
+    for (size_t k = 0; k < results.size(); ++k) {
+        const CaseResult& r = results[k];
+        out << (k ? "," : "") << "\n    {\"name\": \"" << escape_json(r.name) << "\", \"number\": \""
+            << escape_json(r.number) << "\", \"score\": " << r.score << ", \"max_score\": " << r.max_score
+            << ", \"output\": \"" << escape_json(r.output) << "\"}";
+    }
+    out << "\n  ]\n}\n";
+    return static_cast<bool>(out);
+}
+
+bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& results)
+{
+    std::map<std::string, std::vector<const CaseResult*>> by_chapter;
+    for (const CaseResult& r : results)
+        by_chapter[chapter_of(r)].push_back(&r);
+    std::ofstream out(path);
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n";
+    for (const auto& [chapter, cases] : by_chapter) {
+        int failures = 0;
+        for (const CaseResult* r : cases)
+            failures += r->passed ? 0 : 1;
+        out << "  <testsuite name=\"chapter " << chapter << "\" tests=\"" << cases.size() << "\" failures=\""
+            << failures << "\">\n";
+        for (const CaseResult* r : cases) {
+            out << "    <testcase classname=\"ch" << chapter << '.' << escape_xml(r->number) << "\" name=\""
+                << escape_xml(r->name) << "\">";
+            if (!r->passed)
+                out << "<failure message=\"lost " << r->max_score << " points\">" << escape_xml(r->output)
+                    << "</failure>";
+            out << "</testcase>\n";
+        }
+        out << "  </testsuite>\n";
+    }
+    out << "</testsuites>\n";
+    return static_cast<bool>(out);
+}
+
+bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results, const std::string& expect)
+{
+    if (results.empty()) {
+        out << "grader self-check: no graded case ran\n";
+        return false;
+    }
+    int score = 0, max_score = 0;
+    for (const CaseResult& r : results) {
+        score += r.score;
+        max_score += r.max_score;
+    }
+    bool ok = true;
+    if (expect == "full") {
+        ok = score == max_score;
+        for (const CaseResult& r : results)
+            if (!r.passed)
+                out << "grader self-check: the solution fails " << r.number << " '" << r.name << "'\n";
+    } else if (expect == "zero") {
+        ok = score == 0;
+        for (const CaseResult& r : results)
+            if (r.passed)
+                out << "grader self-check: the untouched stub passes " << r.number << " '" << r.name
+                    << "': that case cannot tell a stub from an answer\n";
+    } else if (expect == "less") {
+        ok = score < max_score;
+        if (!ok)
+            out << "grader self-check: the mutant scores full points: no graded case catches it\n";
+    }
+    out << "grader self-check: " << score << " / " << max_score << " points, expected " << expect << ": "
+        << (ok ? "as expected" : "NOT as expected") << '\n';
+    return ok;
+}
+
+}  // namespace rt::grader

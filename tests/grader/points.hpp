@@ -1,0 +1,37 @@
+// Graded cases and their points: the table a student reads, the files a course platform reads
+// (Gradescope's results.json, JUnit XML), and the line format the grade binaries hand to
+// grade_report.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt::grader {
+
+struct CaseResult {
+    std::string number;   // "NN.k": chapter NN, exercise k (or P for the picture)
+    std::string name;     // the behaviour checked
+    int max_score = 0;
+    int score = 0;
+    bool passed = false;
+    std::string output;   // what went in and what came out, for a failed case
+};
+
+// Points per exercise and per chapter, and the failed cases by name.
+void print_points_table(std::ostream& out, const std::vector<CaseResult>& results);
+
+// One case a line, tab-separated, with tabs, newlines and backslashes escaped.
+bool write_results(const std::string& path, const std::vector<CaseResult>& results);
+bool append_result(const std::string& path, const CaseResult& result);
+bool read_results(const std::string& path, std::vector<CaseResult>& results);
+
+// Gradescope's autograder format: {"score", "tests": [{"name","number","score","max_score","output"}]}.
+bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results);
+bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& results);
+
+// `full`: every case passed; `zero`: none did; `less`: at least one failed. Prints what broke the
+// expectation, and says false, when no graded case ran at all.
+bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results, const std::string& expect);
+
+}  // namespace rt::grader

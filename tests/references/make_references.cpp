@@ -1,0 +1,24 @@
+// Renders tests/references/ from the solutions: the pictures the picture tests compare with.
+// Run it through the `references` target after a deliberate change to a figure, look at every
+// picture it writes, and commit them.
+#include "common/png.hpp"
+#include "tests/ch01/picture.hpp"
+
+#include <functional>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+int main()
+{
+    const std::vector<std::pair<std::string, std::function<rt::Image()>>> pictures = {
+        {"01_ray_casting", rt::pictures::ch01},
+    };
+    for (const auto& [name, render] : pictures) {
+        const std::string path = std::string(RT_REFERENCES_DIR) + "/" + name + ".png";
+        rt::write_png(path, render());
+        std::cout << "wrote " << path << '\n';
+    }
+    return 0;
+}
