@@ -1,22 +1,43 @@
-# Runs every chapter's grader on the student's code, whatever each one scores, then merges their
-# results into a points table, results.json (Gradescope) and junit.xml in OUT_DIR.
-# Called by the `grade` test of the grade preset with GRADERS (|-separated paths), REPORT, OUT_DIR.
-string(REPLACE "|" ";" graders "${GRADERS}")
+# Grades a student's exercises: builds and runs every chapter's grader in turn, whatever each one
+# scores, then merges their results into a points table, results.json (Gradescope) and junit.xml.
+#
+# Called by the `grade` test of the grade preset, and by grade_batch.cmake once per submission:
+#   cmake -D BUILD_DIR=... -D CHAPTERS="01|02" -D REPORT=.../grade_report -P grade.cmake
+# with the environment variables RT_GRADEBOOK=file.csv and RT_STUDENT=name set, it also appends
+# the student's row to that gradebook.
+# A chapter that does not compile scores 0 and shows the compiler's first lines; a case that loops
+# forever or crashes loses its own points only.
+string(REPLACE "|" ";" chapters "${CHAPTERS}")
+set(out "${BUILD_DIR}/grade-results")
+file(MAKE_DIRECTORY "${out}")
 set(results "")
-foreach(grader IN LISTS graders)
-  get_filename_component(name "${grader}" NAME_WE)
-  set(result "${OUT_DIR}/grade-results/${name}.results")
-  file(MAKE_DIRECTORY "${OUT_DIR}/grade-results")
-  message(STATUS "---- ${name}")
-  # A student's endless loop must not hang the grading: two minutes a chapter at most.
-  execute_process(COMMAND "${grader}" --results "${result}" --artifacts "${OUT_DIR}/grade-results/pictures"
-    TIMEOUT 120 RESULT_VARIABLE rc)
-  if(NOT rc MATCHES "^[0-9]+$")
-    message(STATUS "${name} did not finish (${rc}): the cases after the last one reported score 0")
+foreach(nn IN LISTS chapters)
+  set(result "${out}/${nn}.results")
+  file(REMOVE "${result}")
+  message(STATUS "---- chapter ${nn}: building")
+  execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --target grade_${nn}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+  if(NOT rc EQUAL 0)
+    # Keep the compiler's errors, one line each, for the student's report.
+    string(REGEX MATCHALL "[^\n]*error[^\n]*" errors "${log}")
+    list(SUBLIST errors 0 12 errors)
+    string(JOIN "\\n" errors ${errors})
+    string(REPLACE "\t" " " errors "${errors}")
+    file(WRITE "${result}" "${nn}.build\t0\t0\tchapter ${nn}'s exercise file does not compile: it scores 0\t${errors}\n")
+    message(STATUS "chapter ${nn} does not compile:\n${log}")
+  else()
+    message(STATUS "---- chapter ${nn}: grading")
+    # Each case in its own process, ten seconds at most: the solutions need well under one.
+    execute_process(COMMAND "${BUILD_DIR}/tests/grade_${nn}" --results "${result}" --artifacts "${out}/pictures"
+      --case-timeout 10)
   endif()
   list(APPEND results "${result}")
 endforeach()
-execute_process(COMMAND "${REPORT}" --json "${OUT_DIR}/results.json" --junit "${OUT_DIR}/junit.xml" ${results}
+set(book "")
+if(DEFINED ENV{RT_GRADEBOOK})
+  set(book --gradebook "$ENV{RT_GRADEBOOK}" --student "$ENV{RT_STUDENT}")
+endif()
+execute_process(COMMAND "${REPORT}" --json "${BUILD_DIR}/results.json" --junit "${BUILD_DIR}/junit.xml" ${book} ${results}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the grade report could not be written in full (${rc})")

@@ -3,8 +3,8 @@
 //
 //   grade_report --json results.json --junit junit.xml RESULTS...
 //
-// A chapter whose results file is missing (its grader did not run to the end) is named, and the
-// report still covers the others.
+// A missing results file is named, and the report still covers the others. With --gradebook FILE --student NAME it also appends the
+// student's points per chapter to a CSV gradebook (batch grading).
 #include "tests/grader/points.hpp"
 
 #include <iomanip>
@@ -15,12 +15,18 @@
 int main(int argc, char** argv)
 {
     using namespace rt::grader;
-    std::string json, junit;
+    std::string json, junit, gradebook, student;
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
-        if ((arg == "--json" || arg == "--junit") && k + 1 < argc)
-            (arg == "--json" ? json : junit) = argv[++k];
+        if (arg == "--json" && k + 1 < argc)
+            json = argv[++k];
+        else if (arg == "--junit" && k + 1 < argc)
+            junit = argv[++k];
+        else if (arg == "--gradebook" && k + 1 < argc)
+            gradebook = argv[++k];
+        else if (arg == "--student" && k + 1 < argc)
+            student = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
             std::cerr << "grade_report: unknown option '" << arg << "'\n";
             return 2;
@@ -50,6 +56,11 @@ int main(int argc, char** argv)
         if (!write_junit_xml(junit, results))
             return std::cerr << "grade_report: " << junit << ": cannot write\n", 2;
         std::cout << "wrote " << junit << '\n';
+    }
+    if (!gradebook.empty()) {
+        if (!append_gradebook_row(gradebook, student, results))
+            return std::cerr << "grade_report: " << gradebook << ": cannot write\n", 2;
+        std::cout << "added " << student << " to " << gradebook << '\n';
     }
     return missing == 0 ? 0 : 1;
 }

@@ -6,6 +6,8 @@
 //                         does: the untouched stubs) or `less` (some case fails: a mutant). The exit
 //                         status then says whether the expectation held, not whether tests passed.
 //   --artifacts DIR       where picture tests write expected, actual and difference images
+//   --case-timeout S      with --results: run each graded case in its own process, stopped after S
+//                         seconds, so an endless loop or a crash in one case costs that case only
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_EXTERNAL_INTERFACES
 #include <catch2/catch.hpp>
@@ -16,6 +18,11 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <thread>
+
+#include <csignal>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace rt::grader {
 
@@ -89,6 +96,85 @@ CATCH_REGISTER_LISTENER(PointsListener)
 
 std::string artifacts_dir = "picture-failures";
 
+namespace {
+
+// The graded cases this run would run: every one, or those the command line's test spec selects.
+std::vector<CaseResult> planned_cases(Catch::Session& session)
+{
+    std::vector<CaseResult> plan;
+    const Catch::Config& config = session.config();
+    for (const Catch::TestCase& test :
+         Catch::filterTests(Catch::getRegistryHub().getTestCaseRegistry().getAllTests(), config.testSpec(), config)) {
+        CaseResult r;
+        r.name = test.name;
+        read_tags(test, r);
+        if (!r.number.empty())
+            plan.push_back(r);
+    }
+    return plan;
+}
+
+// A test name as a Catch2 test spec that matches it alone: its spec characters escaped.
+std::string catch_literal(const std::string& name)
+{
+    std::string spec;
+    for (const char c : name) {
+        if (std::string(",[]*\"\\~").find(c) != std::string::npos)
+            spec += '\\';
+        spec += c;
+    }
+    return spec;
+}
+
+size_t results_so_far()
+{
+    std::vector<CaseResult> got;
+    read_results(results_path, got);
+    return got.size();
+}
+
+// Each case in a child process: the parent waits at most `timeout` seconds, then stops it and
+// records the case as lost, and records a case whose process died without reporting as crashed.
+void run_isolated(Catch::Session& session, int timeout)
+{
+    for (const CaseResult& planned : planned_cases(session)) {
+        const size_t before = results_so_far();
+        std::cout.flush();
+        const pid_t pid = fork();
+        if (pid == 0) {
+            Catch::ConfigData data = session.configData();
+            data.testsOrTags = {catch_literal(planned.name)};
+            session.useConfigData(data);
+            session.run();
+            std::cout.flush();
+            std::_Exit(0);
+        }
+        int status = 0;
+        bool finished = false;
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout);
+        while (!(finished = waitpid(pid, &status, WNOHANG) == pid) && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        if (!finished) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+        }
+        if (results_so_far() > before)
+            continue;
+        CaseResult lost = planned;
+        if (!finished)
+            lost.output = "the case ran longer than " + std::to_string(timeout) + " seconds and was stopped: an endless loop?";
+        else if (WIFSIGNALED(status))
+            lost.output = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ") before it could report";
+        else
+            lost.output = "the case ended without reporting (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
+        append_result(results_path, lost);
+        std::cout << planned.number << " '" << planned.name << "': " << lost.output << '\n';
+    }
+    read_results(results_path, results);
+}
+
+}  // namespace
+
 }  // namespace rt::grader
 
 int main(int argc, char* argv[])
@@ -97,11 +183,13 @@ int main(int argc, char* argv[])
     Catch::Session session;
     Catch::StringMaker<float>::precision = 9;  // so a tolerance like 2e-6 does not print as 0.0
     std::string expect;
+    int case_timeout = 0;
     using namespace Catch::clara;
     session.cli(session.cli() |
                 Opt(results_path, "file")["--results"]("write the graded cases, one a line, to this file") |
                 Opt(expect, "full|zero|less")["--expect-score"]("check the grader itself: exit 0 when the score is as expected") |
-                Opt(artifacts_dir, "dir")["--artifacts"]("where failing picture tests write their images"));
+                Opt(artifacts_dir, "dir")["--artifacts"]("where failing picture tests write their images") |
+                Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this long"));
     if (const int rc = session.applyCommandLine(argc, argv); rc != 0)
         return rc;
     if (!expect.empty() && expect != "full" && expect != "zero" && expect != "less") {
@@ -112,7 +200,15 @@ int main(int argc, char* argv[])
         std::cerr << results_path << ": cannot write the results\n";
         return 2;
     }
-    const int failed = session.run();
+    if (case_timeout > 0 && results_path.empty()) {
+        std::cerr << "--case-timeout needs --results\n";
+        return 2;
+    }
+    int failed = 0;
+    if (case_timeout > 0)
+        run_isolated(session, case_timeout);
+    else
+        failed = session.run();
 
     print_points_table(std::cout, results);
     if (expect.empty())

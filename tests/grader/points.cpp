@@ -85,14 +85,39 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
     out << "\nPoints\n";
     for (const auto& [chapter, total] : by_chapter) {
         out << "  chapter " << chapter << std::setw(14) << total.first << " / " << total.second << '\n';
-        for (const auto& [number, points] : by_exercise)
-            if (number.compare(0, 2, chapter) == 0)
-                out << "    " << std::left << std::setw(8) << number << std::right << std::setw(13)
-                    << points.first << " / " << points.second << '\n';
-        for (const CaseResult& r : results)
-            if (chapter_of(r) == chapter && !r.passed)
-                out << "      lost " << r.max_score << " in " << r.number << ": " << r.name << '\n';
+        for (const auto& [number, points] : by_exercise) {
+            if (number.compare(0, 2, chapter) != 0)
+                continue;
+            out << "    " << std::left << std::setw(8) << number << std::right << std::setw(13) << points.first
+                << " / " << points.second << '\n';
+            for (const CaseResult& r : results)
+                if (r.number == number && !r.passed)
+                    out << "      lost " << r.max_score << ": " << r.name << '\n';
+        }
     }
+}
+
+bool append_gradebook_row(const std::string& path, const std::string& student, const std::vector<CaseResult>& results)
+{
+    std::map<std::string, int> by_chapter;
+    int total = 0;
+    for (const CaseResult& r : results) {
+        by_chapter[chapter_of(r)] += r.score;
+        total += r.score;
+    }
+    const bool is_new = !std::ifstream(path).good();
+    std::ofstream out(path, std::ios::app);
+    if (is_new) {
+        out << "student";
+        for (const auto& entry : by_chapter)
+            out << ",ch" << entry.first;
+        out << ",total\n";
+    }
+    out << '"' << student << '"';
+    for (const auto& entry : by_chapter)
+        out << ',' << entry.second;
+    out << ',' << total << '\n';
+    return static_cast<bool>(out);
 }
 
 static void write_line(std::ostream& out, const CaseResult& r)

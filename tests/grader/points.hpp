@@ -30,6 +30,9 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results);
 bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results);
 bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& results);
 
+// Appends `student,chNN...,total` to a CSV gradebook, with a header when the file is new.
+bool append_gradebook_row(const std::string& path, const std::string& student, const std::vector<CaseResult>& results);
+
 // `full`: every case passed; `zero`: none did; `less`: at least one failed. Prints what broke the
 // expectation, and says false, when no graded case ran at all.
 bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results, const std::string& expect);

@@ -1,0 +1,46 @@
+# Batch grading: every submission folder under SUBMISSIONS (one per student, each holding that
+# student's NN_name.cpp files) graded into one CSV gradebook.
+#
+#   cmake -D SUBMISSIONS=/path/to/class -P tests/grade_batch.cmake
+#
+# Optional: -D BUILD_DIR=... (default build/batch), -D GRADEBOOK=... (default BUILD_DIR/gradebook.csv).
+# One build folder serves every student: switching RT_EXERCISES_DIR rebuilds only the exercises.
+# Each student's results.json and junit.xml are kept under BUILD_DIR/students/NAME/.
+get_filename_component(source_dir "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+if(NOT SUBMISSIONS OR NOT IS_DIRECTORY "${SUBMISSIONS}")
+  message(FATAL_ERROR "grade_batch: SUBMISSIONS=${SUBMISSIONS} is not a folder (-D SUBMISSIONS=/path/to/class)")
+endif()
+if(NOT BUILD_DIR)
+  set(BUILD_DIR "${source_dir}/build/batch")
+endif()
+if(NOT GRADEBOOK)
+  set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
+endif()
+file(REMOVE "${GRADEBOOK}")
+file(GLOB entries LIST_DIRECTORIES true "${SUBMISSIONS}/*")
+list(SORT entries)
+foreach(entry IN LISTS entries)
+  if(NOT IS_DIRECTORY "${entry}")
+    continue()
+  endif()
+  get_filename_component(student "${entry}" NAME)
+  message(STATUS "==== ${student}")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" -G Ninja
+      -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${entry}"
+    RESULT_VARIABLE rc OUTPUT_QUIET)
+  if(rc EQUAL 0)
+    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" RESULT_VARIABLE rc)
+  endif()
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "grade_batch: the kit itself did not build for ${student}")
+  endif()
+  set(ENV{RT_GRADEBOOK} "${GRADEBOOK}")
+  set(ENV{RT_STUDENT} "${student}")
+  execute_process(COMMAND ctest --test-dir "${BUILD_DIR}" -R "^grade$" --output-on-failure RESULT_VARIABLE rc OUTPUT_QUIET)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "grade_batch: grading ${student} failed")
+  endif()
+  file(MAKE_DIRECTORY "${BUILD_DIR}/students/${student}")
+  file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" DESTINATION "${BUILD_DIR}/students/${student}")
+endforeach()
+message(STATUS "gradebook: ${GRADEBOOK}")
