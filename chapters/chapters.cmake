@@ -36,13 +36,18 @@ function(rt_chapter_libraries out nn track)
   set(${out} ${libs} PARENT_SCOPE)
 endfunction()
 
-# Each chapter's program renders its figure; the `figures` target renders them all.
+# Each chapter's program renders its figure; the `figures` target renders them all. In the grade
+# build the programs show the student's own picture: they link the graded track.
+set(program_track figures)
+if(RT_GRADE)
+  set(program_track graded)
+endif()
 set(figure_files "")
 foreach(chapter IN LISTS RT_CHAPTERS)
   string(SUBSTRING "${chapter}" 0 2 nn)
   add_executable(${chapter} "${CMAKE_SOURCE_DIR}/chapters/${chapter}/main.cpp")
   set_target_properties(${chapter} PROPERTIES EXCLUDE_FROM_ALL "${RT_GRADE}")
-  rt_chapter_libraries(libs ${nn} figures)
+  rt_chapter_libraries(libs ${nn} ${program_track})
   target_link_libraries(${chapter} PRIVATE ${libs})
   set(figure "${RT_FIGURES_DIR}/${chapter}.png")
   add_custom_command(OUTPUT "${figure}"
