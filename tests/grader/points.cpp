@@ -72,6 +72,18 @@ std::string escape_xml(const std::string& s)
 
 }  // namespace
 
+void print_case(std::ostream& out, const CaseResult& r)
+{
+    out << (r.passed ? "  ok    " : "  FAIL  ") << std::left << std::setw(6) << r.number << std::right << std::setw(2)
+        << r.score << '/' << r.max_score << "  " << r.name << '\n';
+    if (r.passed)
+        return;
+    std::istringstream lines(r.output);
+    std::string line;
+    while (std::getline(lines, line))
+        out << "          " << line << '\n';
+}
+
 void print_points_table(std::ostream& out, const std::vector<CaseResult>& results)
 {
     // number -> (score, max), ordered; chapter totals alongside.

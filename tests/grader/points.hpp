@@ -18,6 +18,9 @@ struct CaseResult {
     std::string output;   // what went in and what came out, for a failed case
 };
 
+// One case's verdict, and for a failed case what went in and came out, indented.
+void print_case(std::ostream& out, const CaseResult& result);
+
 // Points per exercise and per chapter, and the failed cases by name.
 void print_points_table(std::ostream& out, const std::vector<CaseResult>& results);
 
