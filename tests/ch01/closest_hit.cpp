@@ -68,10 +68,12 @@ GRADED_TEST("a ray that misses every disc finds nothing, and one aimed at a disc
     DiscScene scene;
     CHECK_FALSE(closest_hit(down_z, scene, Interval{}));  // an empty scene
     scene.discs = {disc_at(-3.0f), disc_at(-6.0f)};
-    const Ray beside{{2.5f, 0, 0}, {0, 0, -1}};  // passes outside both radii
-    const std::optional<Hit> miss = closest_hit(beside, scene, Interval{});
-    INFO(show(beside) << " against " << describe(scene) << ": got " << show_hit(miss) << ", expected no hit");
-    CHECK_FALSE(miss);
+    {
+        const Ray beside{{2.5f, 0, 0}, {0, 0, -1}};  // passes outside both radii
+        const std::optional<Hit> miss = closest_hit(beside, scene, Interval{});
+        INFO(show(beside) << " against " << describe(scene) << ": got " << show_hit(miss) << ", expected no hit");
+        CHECK_FALSE(miss);
+    }
     const Ray aimed{{0.5f, 0, 0}, {0, 0, -1}};
     const std::optional<Hit> hit = closest_hit(aimed, scene, Interval{});
     INFO(show(aimed) << " against " << describe(scene) << ": got " << show_hit(hit) << ", expected t = 3 on disc 0");

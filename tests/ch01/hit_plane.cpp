@@ -55,10 +55,12 @@ GRADED_TEST("an oblique ray hits where t = n.(b - u) / n.v says, and the point l
 
 GRADED_TEST("a ray parallel to the plane misses, and one tilted slightly toward it hits far away", "01.2", 2)
 {
-    const Ray parallel{{0, 1, 0}, {1, 0, 0}};
-    const std::optional<float> none = hit_plane(parallel, floor_plane, Interval{});
-    INFO(describe(parallel, floor_plane, Interval{}) << ": got t = " << show(none) << ", expected no hit");
-    CHECK_FALSE(none);
+    {
+        const Ray parallel{{0, 1, 0}, {1, 0, 0}};
+        const std::optional<float> none = hit_plane(parallel, floor_plane, Interval{});
+        INFO(describe(parallel, floor_plane, Interval{}) << ": got t = " << show(none) << ", expected no hit");
+        CHECK_FALSE(none);
+    }
 
     const Ray tilted{{0, 1, 0}, glm::normalize(vec3(1, -1e-3f, 0))};
     const double expected = reference_t(tilted, floor_plane);
@@ -106,11 +108,13 @@ STABILITY_TEST("grazing rays give a finite t or no hit, never a NaN or an infini
 {
     // dir.y = -1e-30 puts the hit at 1e30, still a float; -1e-45 (the smallest subnormal) puts it
     // beyond the largest float; a ray starting on the plane meets it at t = 0, outside the range.
-    const Ray far{{0, 1, 0}, {1, -1e-30f, 0}};
-    const std::optional<float> t_far = hit_plane(far, floor_plane, Interval{});
-    INFO(describe(far, floor_plane, Interval{}) << ": got t = " << show(t_far) << ", expected about 1e30");
-    REQUIRE(t_far);
-    CHECK(rt::grader::rel_error(*t_far, 1e30) <= 1e-6);
+    {
+        const Ray far{{0, 1, 0}, {1, -1e-30f, 0}};
+        const std::optional<float> t_far = hit_plane(far, floor_plane, Interval{});
+        INFO(describe(far, floor_plane, Interval{}) << ": got t = " << show(t_far) << ", expected about 1e30");
+        REQUIRE(t_far);
+        CHECK(rt::grader::rel_error(*t_far, 1e30) <= 1e-6);
+    }
 
     for (const Ray& ray : {Ray{{0, 1, 0}, {1, -1e-45f, 0}}, Ray{{0, 0, 0}, glm::normalize(vec3(1, -1, 0))},
                            Ray{{0, 0, 0}, {1, 0, 0}}}) {

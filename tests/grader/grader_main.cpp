@@ -15,6 +15,7 @@
 #include "tests/grader/picture.hpp"
 #include "tests/grader/points.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <regex>
 #include <sstream>
@@ -111,6 +112,9 @@ std::vector<CaseResult> planned_cases(Catch::Session& session)
         if (!r.number.empty())
             plan.push_back(r);
     }
+    // In exercise order (01.1 before 01.2), whatever order the test files were linked in.
+    std::stable_sort(plan.begin(), plan.end(),
+                     [](const CaseResult& a, const CaseResult& b) { return a.number < b.number; });
     return plan;
 }
 
