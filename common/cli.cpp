@@ -122,6 +122,17 @@ void add_common_options(CommandLine& cli, CommonOptions& o)
     cli.flag("--stats", o.stats, "print what the render did, one key=value per line");
 }
 
+RenderSettings render_settings(const CommonOptions& o)
+{
+    RenderSettings s;
+    s.width = o.width;
+    s.height = o.height;
+    s.spp = o.spp;
+    s.threads = o.threads;
+    s.seed = o.seed;
+    return s;
+}
+
 int run_program(const std::string& program, const std::function<int()>& body)
 {
     try {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/error.hpp"
+#include "common/render.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -51,6 +52,9 @@ struct CommonOptions {
 };
 
 void add_common_options(CommandLine& cli, CommonOptions& options);
+
+// The render the common options ask for (size, samples, threads, seed).
+RenderSettings render_settings(const CommonOptions& options);
 
 // Runs a program's body, turning InputError into "program: message" on stderr and exit status 2.
 int run_program(const std::string& program, const std::function<int()>& body);

@@ -12,13 +12,17 @@ constexpr float infinity = std::numeric_limits<float>::infinity();
 // works; chapter 04 measures what a fixed bound like this costs for rays that start on a surface.
 constexpr float t_min_default = 1e-4f;
 
-struct Interval {
-    float min = t_min_default;
-    float max = infinity;
+// Over the scalar type T, like BasicRay; the kit's queries use float, `Interval`.
+template <class T>
+struct BasicInterval {
+    T min = static_cast<T>(t_min_default);
+    T max = std::numeric_limits<T>::infinity();
 
     // Open at both ends: a hit exactly at min or max is outside, so a ray never re-finds the
-    // closest hit it already holds (max) nor a surface it starts on (min).
-    bool surrounds(float t) const { return min < t && t < max; }
+    // closest hit it already holds (max) nor a surface it starts on (min). A NaN is never inside.
+    bool surrounds(T t) const { return min < t && t < max; }
 };
+
+using Interval = BasicInterval<float>;
 
 }  // namespace rt

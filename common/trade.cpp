@@ -45,10 +45,14 @@ static double rays_per_second(const TradeRow& row)
 void print_trade_table(std::ostream& out, const TradeTable& table)
 {
     out << table.chapter << ": error is " << table.error_metric << '\n';
-    out << std::left << std::setw(10) << table.rows.front().knob << std::right << std::setw(12) << "seconds"
+    // The first column as wide as its longest entry, so rows stay aligned whatever they are named.
+    int width = std::max(10, static_cast<int>(table.rows.front().knob.size()) + 2);
+    for (const TradeRow& row : table.rows)
+        width = std::max(width, static_cast<int>(row.value.size()) + 2);
+    out << std::left << std::setw(width) << table.rows.front().knob << std::right << std::setw(12) << "seconds"
         << std::setw(14) << "rays" << std::setw(16) << "rays/second" << std::setw(14) << "error" << '\n';
     for (const TradeRow& row : table.rows)
-        out << std::left << std::setw(10) << row.value << std::right << std::fixed << std::setprecision(4)
+        out << std::left << std::setw(width) << row.value << std::right << std::fixed << std::setprecision(4)
             << std::setw(12) << row.seconds << std::setw(14) << row.rays << std::setprecision(0)
             << std::setw(16) << rays_per_second(row) << std::scientific << std::setprecision(3) << std::setw(14)
             << row.error << std::defaultfloat << '\n';

@@ -15,4 +15,8 @@ using color = glm::vec3;   // linear RGB radiance, not yet tone mapped
 using dvec3 = glm::dvec3;
 using dpoint3 = glm::dvec3;
 
+// A vector over the scalar type T (float or double), for formulas written once for both.
+template <class T>
+using vec3_t = glm::vec<3, T>;
+
 }  // namespace rt

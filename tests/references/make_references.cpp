@@ -3,6 +3,7 @@
 // picture it writes, and commit them.
 #include "common/png.hpp"
 #include "tests/ch01/picture.hpp"
+#include "tests/ch02/picture.hpp"
 
 #include <functional>
 #include <iostream>
@@ -14,6 +15,7 @@ int main()
 {
     const std::vector<std::pair<std::string, std::function<rt::Image()>>> pictures = {
         {"01_ray_casting", rt::pictures::ch01},
+        {"02_spheres_triangles", rt::pictures::ch02},
     };
     for (const auto& [name, render] : pictures) {
         const std::string path = std::string(RT_REFERENCES_DIR) + "/" + name + ".png";

@@ -1,0 +1,53 @@
+// Chapter 02's scene: spheres and triangles, each with its colour; triangles also carry their
+// corners' normals so meshes of curved surfaces can be shaded smoothly. That is all the figure
+// needs (DESIGN.md: model only what a scene requires).
+//
+// The shapes sit in flat arrays of geometry only (what the intersection tests read); what shading
+// reads sits in arrays beside them, index for index. A hit names its object by one number:
+// spheres first, then triangles (`object_is_sphere`, `triangle_index`).
+#pragma once
+
+#include "02_spheres_triangles/shapes.hpp"
+
+#include <cassert>
+#include <vector>
+
+namespace rt {
+
+struct ShapeScene {
+    std::vector<Sphere> spheres;
+    std::vector<color> sphere_albedo;  // sphere_albedo[k] is the colour of spheres[k]
+
+    std::vector<Triangle> triangles;
+    std::vector<CornerNormals> corner_normals;  // one per triangle; a flat one has its face normal thrice
+    std::vector<color> triangle_albedo;
+
+    color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
+
+    bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
+    int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
+
+    void add_sphere(const Sphere& sphere, const color& albedo)
+    {
+        spheres.push_back(sphere);
+        sphere_albedo.push_back(albedo);
+    }
+
+    // A triangle shaded with its corners' normals.
+    void add_triangle(const Triangle& tri, const CornerNormals& normals, const color& albedo)
+    {
+        assert(spheres.size() == sphere_albedo.size() && triangles.size() == corner_normals.size());
+        triangles.push_back(tri);
+        corner_normals.push_back(normals);
+        triangle_albedo.push_back(albedo);
+    }
+
+    // A flat triangle: its face normal, (b - a) x (c - a) made unit, at every corner.
+    void add_triangle(const Triangle& tri, const color& albedo)
+    {
+        const vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+        add_triangle(tri, CornerNormals{n, n, n}, albedo);
+    }
+};
+
+}  // namespace rt
