@@ -21,3 +21,5 @@ rt_expect_exit(01_ray_casting.fov_180 01_ray_casting 2 "--fov must lie strictly 
 rt_expect_exit(01_ray_casting.fov_nan 01_ray_casting 2 "--fov takes a finite number, got 'nan'" --fov nan)
 rt_expect_exit(01_ray_casting.unwritable_png 01_ray_casting 2 "cannot write the PNG file"
   --width 4 --height 4 --out /proc/no/such/folder/x.png)
+rt_expect_exit(02_spheres_triangles.unknown_triangle_test 02_spheres_triangles 2 "--triangle" --triangle bogus)
+rt_expect_exit(02_spheres_triangles.probes_too_few 02_spheres_triangles 2 "--probes must be between 1000 and" --probes 10)

@@ -20,20 +20,11 @@ struct Options {
     std::string csv = "01_ray_casting.csv";
 };
 
-RenderSettings settings_for(const Options& o, int spp)
-{
-    RenderSettings s;
-    s.width = o.common.width;
-    s.height = o.common.height;
-    s.spp = spp;
-    s.threads = o.common.threads;
-    s.seed = o.common.seed;
-    return s;
-}
-
 Image render_with(const Options& o, int spp)
 {
-    return ch01::render_figure(settings_for(o, spp), o.fov);
+    RenderSettings settings = render_settings(o.common);
+    settings.spp = spp;
+    return ch01::render_figure(settings, o.fov);
 }
 
 // Samples per pixel against time and error: RMSE in linear RGB against a many-sample render.
