@@ -58,3 +58,31 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND figure_files "${figure}")
 endforeach()
 add_custom_target(figures DEPENDS ${figure_files})
+
+# The speed/accuracy tables: `cmake --build <build> --target trade` runs every program's --sweep
+# into build/trade/NN_name.csv and, when gnuplot is installed (optional: nothing else needs it),
+# draws each as build/trade/NN_name.png.
+set(RT_TRADE_DIR "${CMAKE_SOURCE_DIR}/build/trade" CACHE PATH "Where the trade target writes its tables and plots")
+find_program(GNUPLOT gnuplot)
+set(trade_files "")
+foreach(chapter IN LISTS RT_CHAPTERS)
+  set(csv "${RT_TRADE_DIR}/${chapter}.csv")
+  set(plot_command "")
+  set(outputs "${csv}")
+  if(GNUPLOT)
+    set(png "${RT_TRADE_DIR}/${chapter}.png")
+    set(plot_command COMMAND "${GNUPLOT}" -e "csv='${csv}'" -e "png='${png}'" -e "title='${chapter}'"
+      "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot")
+    list(APPEND outputs "${png}")
+  endif()
+  add_custom_command(OUTPUT ${outputs}
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${RT_TRADE_DIR}"
+    COMMAND ${chapter} --sweep --csv "${csv}"
+    ${plot_command}
+    DEPENDS ${chapter} "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot"
+    COMMENT "Measuring ${chapter}'s trade into ${csv}"
+    USES_TERMINAL
+    VERBATIM)
+  list(APPEND trade_files ${outputs})
+endforeach()
+add_custom_target(trade DEPENDS ${trade_files})
