@@ -1,0 +1,260 @@
+#include "common/scenes/nff_generators.hpp"
+
+#include "common/vec.hpp"
+
+#include <array>
+#include <cmath>
+#include <iomanip>
+
+namespace rt {
+
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// Digits a coordinate is written with: enough that the smallest objects of the deepest scenes
+// (a sphereflake's spheres at 3^-6 of the first, a pyramid's tetrahedra at 2^-8) keep their shape.
+constexpr int written_digits = 7;
+
+double radians(double degrees) { return degrees * pi / 180.0; }
+
+// Writes NFF commands, one a line, as the SPD programs print them.
+class NffWriter {
+public:
+    explicit NffWriter(std::ostream& out) : out_(out) { out_ << std::setprecision(written_digits); }
+
+    void comment(const std::string& text) { out_ << "# " << text << '\n'; }
+
+    void view(const dvec3& from, const dvec3& at, double angle, int resolution)
+    {
+        out_ << "v\nfrom " << xyz(from) << "\nat " << xyz(at) << "\nup 0 1 0\nangle " << angle
+             << "\nhither 0.01\nresolution " << resolution << ' ' << resolution << '\n';
+    }
+    void background(const dvec3& rgb) { out_ << "b " << xyz(rgb) << '\n'; }
+    void light(const dvec3& p) { out_ << "l " << xyz(p) << '\n'; }
+    // f r g b Kd Ks Shine T ior
+    void material(const dvec3& rgb, double kd, double ks, double shine)
+    {
+        out_ << "f " << xyz(rgb) << ' ' << kd << ' ' << ks << ' ' << shine << " 0 0\n";
+    }
+    void sphere(const dvec3& c, double r) { out_ << "s " << xyz(c) << ' ' << r << '\n'; }
+    void cone(const dvec3& base, double base_r, const dvec3& apex, double apex_r)
+    {
+        out_ << "c\n" << xyz(base) << ' ' << base_r << '\n' << xyz(apex) << ' ' << apex_r << '\n';
+    }
+    void polygon(const std::vector<dvec3>& vertices)
+    {
+        out_ << "p " << vertices.size() << '\n';
+        for (const dvec3& v : vertices)
+            out_ << xyz(v) << '\n';
+    }
+
+    // A square floor at height y, half as wide as `half`, facing up (counterclockwise from above).
+    void floor(double y, double half)
+    {
+        polygon({{-half, y, -half}, {-half, y, half}, {half, y, half}, {half, y, -half}});
+    }
+
+private:
+    struct Xyz {
+        dvec3 v;
+    };
+    static Xyz xyz(const dvec3& v) { return {v}; }
+    friend std::ostream& operator<<(std::ostream& o, const Xyz& p)
+    {
+        // A tiny negative zero would print as "-0": clean, and the same on every machine.
+        const auto clean = [](double x) { return x == 0.0 ? 0.0 : x; };
+        return o << clean(p.v.x) << ' ' << clean(p.v.y) << ' ' << clean(p.v.z);
+    }
+
+    std::ostream& out_;
+};
+
+// Two unit vectors perpendicular to unit `w` and to each other (Duff et al. 2017, "Building an
+// Orthonormal Basis, Revisited"): no branch on which axis w is nearest.
+void basis(const dvec3& w, dvec3& u, dvec3& v)
+{
+    const double sign = std::copysign(1.0, w.z);
+    const double a = -1.0 / (sign + w.z);
+    const double b = w.x * w.y * a;
+    u = dvec3(1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x);
+    v = dvec3(b, sign + w.y * w.y * a, -w.y);
+}
+
+// A direction `elevation` degrees above the plane perpendicular to `axis`, at `azimuth` degrees
+// around it.
+dvec3 around(const dvec3& axis, double azimuth, double elevation)
+{
+    dvec3 u, v;
+    basis(axis, u, v);
+    const double e = radians(elevation), a = radians(azimuth);
+    return std::cos(e) * (std::cos(a) * u + std::sin(a) * v) + std::sin(e) * axis;
+}
+
+// --- Sphereflake ---
+
+// Where a sphere's nine children sit: six around its equator (perpendicular to the direction it
+// grew in), three higher up between them. Apart by at least 56 degrees seen from the parent's
+// centre, while a child a third the parent's size spans 29: the children never touch.
+constexpr int flake_ring_count = 6;
+constexpr double flake_crown_elevation = 50.0;  // degrees above the equator
+constexpr double flake_child_scale = 1.0 / 3.0;
+
+void flake(NffWriter& w, const dvec3& center, double radius, const dvec3& axis, int depth)
+{
+    w.sphere(center, radius);
+    if (depth == 0)
+        return;
+    const double child_radius = radius * flake_child_scale;
+    const double reach = radius + child_radius;  // children rest on the parent's surface
+    for (int k = 0; k < flake_ring_count; ++k) {
+        const dvec3 d = around(axis, 360.0 / flake_ring_count * k, 0.0);
+        flake(w, center + reach * d, child_radius, d, depth - 1);
+    }
+    for (int k = 0; k < 3; ++k) {
+        const dvec3 d = around(axis, 30.0 + 120.0 * k, flake_crown_elevation);
+        flake(w, center + reach * d, child_radius, d, depth - 1);
+    }
+}
+
+// --- Pyramid ---
+
+using Tetrahedron = std::array<dvec3, 4>;
+
+void tetrahedron_faces(NffWriter& w, const Tetrahedron& t)
+{
+    // Each face is the three corners other than one; wound so its normal points away from that one.
+    for (int skip = 0; skip < 4; ++skip) {
+        std::vector<dvec3> face;
+        for (int k = 0; k < 4; ++k)
+            if (k != skip)
+                face.push_back(t[k]);
+        if (glm::dot(glm::cross(face[1] - face[0], face[2] - face[0]), t[skip] - face[0]) > 0.0)
+            std::swap(face[1], face[2]);
+        w.polygon(face);
+    }
+}
+
+void pyramid(NffWriter& w, const Tetrahedron& t, int depth)
+{
+    if (depth == 0) {
+        tetrahedron_faces(w, t);
+        return;
+    }
+    // Each corner keeps a half-size copy: the corner and the midpoints of its three edges.
+    for (int corner = 0; corner < 4; ++corner) {
+        Tetrahedron half;
+        for (int k = 0; k < 4; ++k)
+            half[k] = 0.5 * (t[corner] + t[k]);
+        pyramid(w, half, depth - 1);
+    }
+}
+
+// --- Tree ---
+
+constexpr int tree_branches = 3;
+constexpr double tree_spread = 32.0;        // degrees between a branch and its parent
+constexpr double tree_twist = 137.5;        // degrees each level turns: the golden angle, so no
+                                            // two levels' branches line up
+constexpr double tree_length_scale = 0.72;  // a branch against its parent
+constexpr double tree_taper = 0.65;         // a branch's tip radius against its base radius
+
+struct Leaf {
+    dvec3 center;
+    double radius;
+};
+
+// Writes the branch and those growing from it; keeps its leaves for later, since they take
+// another material and NFF's material is whatever `f` came last.
+void branch(NffWriter& w, const dvec3& base, const dvec3& direction, double length, double radius, double twist,
+            int depth, std::vector<Leaf>& leaves)
+{
+    const dvec3 tip = base + length * direction;
+    const double tip_radius = radius * tree_taper;
+    w.cone(base, radius, tip, tip_radius);
+    w.sphere(tip, tip_radius);  // the joint: closes the open cones that meet here
+    if (depth == 0) {
+        // A leaf about a third of the last branch's length, just past its tip.
+        leaves.push_back({tip + 0.25 * length * direction, 0.35 * length});
+        return;
+    }
+    for (int k = 0; k < tree_branches; ++k) {
+        const dvec3 d = around(direction, twist + 360.0 / tree_branches * k, 90.0 - tree_spread);
+        branch(w, tip, d, length * tree_length_scale, tip_radius, twist + tree_twist, depth - 1, leaves);
+    }
+}
+
+// The lights and view every generated scene shares, framing an object `size` across whose base
+// stands at the origin.
+void stage(NffWriter& w, double size, double height)
+{
+    const dvec3 target(0.0, 0.5 * height, 0.0);
+    w.view(target + size * dvec3(1.6, 1.0, 2.6), target, 40.0, 512);
+    w.background(dvec3(0.078, 0.361, 0.753));  // the sky blue of SPD's sphereflake
+    w.light(size * dvec3(-3.0, 4.0, 2.0));
+    w.light(size * dvec3(3.0, 5.0, 3.0));
+    w.light(size * dvec3(1.0, 3.0, -4.0));
+}
+
+}  // namespace
+
+void write_sphereflake(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("sphereflake, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    stage(w, 2.6, 2.0);
+    w.material(dvec3(0.8, 0.6, 0.4), 0.7, 0.3, 30.0);  // a brass floor that mirrors a little
+    w.floor(-1.0, 8.0);
+    w.material(dvec3(1.0, 0.9, 0.7), 0.5, 0.5, 100.0);
+    flake(w, dvec3(0.0), 1.0, dvec3(0.0, 1.0, 0.0), depth);
+}
+
+void write_pyramid(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("tetrahedral pyramid, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    // A regular tetrahedron of edge 2 standing on the floor.
+    const double edge = 2.0;
+    const double height = edge * std::sqrt(2.0 / 3.0);
+    const double circumradius = edge / std::sqrt(3.0);  // of the base triangle
+    Tetrahedron t;
+    for (int k = 0; k < 3; ++k) {
+        const double a = radians(90.0 + 120.0 * k);
+        t[k] = dvec3(circumradius * std::cos(a), 0.0, circumradius * std::sin(a));
+    }
+    t[3] = dvec3(0.0, height, 0.0);
+    stage(w, 1.4, height);
+    w.material(dvec3(0.6, 0.6, 0.6), 0.9, 0.1, 10.0);
+    w.floor(0.0, 6.0);
+    w.material(dvec3(1.0, 0.2, 0.2), 0.8, 0.2, 20.0);
+    pyramid(w, t, depth);
+}
+
+void write_tree(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("tree, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    const double trunk = 1.2;
+    stage(w, 3.0, 2.8);
+    w.material(dvec3(0.4, 0.7, 0.3), 0.9, 0.0, 0.0);
+    w.floor(0.0, 8.0);
+    w.material(dvec3(0.45, 0.3, 0.15), 0.9, 0.1, 5.0);
+    std::vector<Leaf> leaves;
+    branch(w, dvec3(0.0), dvec3(0.0, 1.0, 0.0), trunk, 0.12, 0.0, depth, leaves);
+    w.material(dvec3(0.2, 0.6, 0.15), 0.8, 0.2, 20.0);
+    for (const Leaf& leaf : leaves)
+        w.sphere(leaf.center, leaf.radius);
+}
+
+const std::vector<NffGenerator>& nff_generators()
+{
+    // Depth limits: 597871 spheres, 262144 triangles, 88573 cones; each file tens of megabytes.
+    static const std::vector<NffGenerator> generators = {
+        {"sphereflake", "a sphere with nine smaller spheres on it, recursively (SPD's balls)", 3, 6, write_sphereflake},
+        {"pyramid", "a tetrahedron of four half-size tetrahedra, recursively (SPD's tetra)", 4, 8, write_pyramid},
+        {"tree", "a trunk branching into three, recursively: cones, joints and leaves", 5, 10, write_tree},
+    };
+    return generators;
+}
+
+}  // namespace rt

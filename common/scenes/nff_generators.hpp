@@ -1,0 +1,38 @@
+// The kit's larger NFF scenes, made by program rather than shipped: each is as big as its --depth
+// asks, so the acceleration chapters can measure how cost grows with the number of objects.
+// They follow the ideas of three of Eric Haines' Standard Procedural Databases (SPD, 1987) -- a
+// sphereflake ("balls"), a recursive tetrahedral pyramid ("tetra"), a branching tree -- but their
+// shapes, views and materials are the kit's own.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct NffGenerator {
+    std::string name;      // what `nff_generate NAME` calls it
+    std::string summary;   // one line for --help
+    int default_depth;
+    int max_depth;         // the deepest that still writes a file of tens of megabytes, not gigabytes
+    void (*write)(std::ostream& out, int depth);
+};
+
+// Sphereflake: a sphere with nine spheres a third its size on its surface, each with nine of its
+// own, `depth` times; (9^(depth+1) - 1) / 8 spheres above a square floor.
+void write_sphereflake(std::ostream& out, int depth);
+
+// A tetrahedron replaced by four half-size tetrahedra at its corners, `depth` times: 4^depth
+// tetrahedra, each four triangles facing out, above a square floor.
+void write_pyramid(std::ostream& out, int depth);
+
+// A trunk that splits into three thinner, shorter branches, `depth` times: each branch an open
+// cone, each joint a sphere that closes the cones, each last branch ending in a leaf sphere:
+// (3^(depth+1) - 1) / 2 cones and as many joint spheres, 3^depth leaves, above a square floor.
+void write_tree(std::ostream& out, int depth);
+
+// The generators above, for the program and the tests.
+const std::vector<NffGenerator>& nff_generators();
+
+}  // namespace rt
