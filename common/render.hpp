@@ -10,6 +10,8 @@
 #include "common/random.hpp"
 #include "common/stats.hpp"
 
+#include <glm/common.hpp>
+
 #include <cstdint>
 
 #ifdef _OPENMP
@@ -44,10 +46,16 @@ inline PixelSample sample_position(int i, int j, int spp, Rng& rng)
 
 // `radiance(x, y, rng)` returns the colour seen through pixel position (x, y); it may draw more
 // numbers from rng (for lens or light samples in later chapters).
+//
+// With `variance_of_mean`, also the estimated variance of each pixel's mean, s^2 / spp from the
+// spread of its samples (0 at 1 spp): what a noisy picture test needs to know how far a correct
+// render may stray from the converged one (tests/grader/picture.hpp).
 template <class Radiance>
-Image render(const RenderSettings& s, const Radiance& radiance)
+Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_of_mean = nullptr)
 {
     Image image(s.width, s.height);
+    if (variance_of_mean)
+        *variance_of_mean = Image(s.width, s.height);
     Progress progress("rendering", s.show_progress ? s.height : 0);
 #ifdef _OPENMP
     const int threads = s.threads > 0 ? s.threads : omp_get_max_threads();
@@ -60,12 +68,20 @@ Image render(const RenderSettings& s, const Radiance& radiance)
         for (int j = 0; j < s.height; ++j) {
             for (int i = 0; i < s.width; ++i) {
                 Rng rng = pixel_rng(s.seed, i, j, s.width);
-                color sum(0.0f);
+                color sum(0.0f), sum_sq(0.0f);
                 for (int k = 0; k < s.spp; ++k) {
                     const PixelSample ps = sample_position(i, j, s.spp, rng);
-                    sum += radiance(ps.x, ps.y, rng);
+                    const color c = radiance(ps.x, ps.y, rng);
+                    sum += c;
+                    sum_sq += c * c;
                 }
-                image.at(i, j) = sum / static_cast<float>(s.spp);
+                const float n = static_cast<float>(s.spp);
+                image.at(i, j) = sum / n;
+                if (variance_of_mean && s.spp > 1) {
+                    // Unbiased sample variance, then divided by n for the variance of the mean.
+                    const color var = glm::max(sum_sq - sum * sum / n, color(0.0f)) / (n - 1.0f);
+                    variance_of_mean->at(i, j) = var / n;
+                }
             }
             if (s.show_progress)
                 progress.tick();

@@ -12,6 +12,7 @@
 namespace rt::grader {
 
 extern std::string artifacts_dir;
+extern std::string references_dir;  // tests/references/ unless a test points it elsewhere
 
 // Exact pictures (no random sampling): a pixel differs when a channel differs by more than
 // `levels` 8-bit sRGB levels, which absorbs the last-bit rounding of another compiler; up to
@@ -27,9 +28,27 @@ struct PictureVerdict {
     std::string report;  // what differed and where the images are, in words
 };
 
+// Noisy pictures (random light or lens samples): a correct render differs from the reference by
+// its noise, so pixels are compared in blocks, and a block's mean may stray from the reference's by
+// at most `z` standard errors. The standard error follows from the sample count: the render's own
+// per-pixel variance of the mean (render()'s variance_of_mean), plus the reference's, which is the
+// same per-sample spread over `reference_spp` samples, plus half an 8-bit level of the reference
+// PNG's rounding. z = 5 makes a false failure about one in a million per block and channel; a
+// wrong weighting (a light too bright by a factor, samples from the wrong place) moves whole
+// regions by many standard errors.
+struct NoisyTolerance {
+    int spp = 16;             // samples per pixel of the render under test
+    int reference_spp = 1024; // samples per pixel of the reference PNG
+    int block = 8;            // block side in pixels
+    double z = 5.0;
+};
+
 std::string reference_path(const std::string& name);
 
 PictureVerdict compare_with_reference(const Image& actual, const std::string& name,
                                       const PictureTolerance& tolerance = {});
+
+PictureVerdict compare_noisy_with_reference(const Image& mean, const Image& variance_of_mean, const std::string& name,
+                                            const NoisyTolerance& tolerance);
 
 }  // namespace rt::grader
