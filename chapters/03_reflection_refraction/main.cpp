@@ -1,0 +1,184 @@
+// Chapter 03's program: renders the figure (Whitted's mirror and glass spheres) and, with --sweep,
+// measures what the recursion's depth and weight cut-off cost and buy, and how far Schlick's
+// approximation strays from Fresnel's exact reflectance.
+#include "03_reflection_refraction/figure.hpp"
+#include "03_reflection_refraction/fresnel_table.hpp"
+#include "03_reflection_refraction/rounds.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/trade.hpp"
+
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    TraceSettings trace;
+    std::string fresnel = "exact";
+    bool sweep = false;
+    int reference_depth = 32;
+    int repeat = 5;
+    int angles = 1000001;
+    std::string csv = "03_reflection_refraction.csv";
+};
+
+FresnelModel model_named(const std::string& name)
+{
+    if (name == "exact")
+        return FresnelModel::exact;
+    if (name == "schlick")
+        return FresnelModel::schlick;
+    throw InputError("--fresnel takes exact or schlick, got '" + name + "'");
+}
+
+std::string sibling_csv(const std::string& path, const std::string& suffix)
+{
+    const size_t dot = path.rfind(".csv");
+    return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + ".csv";
+}
+
+std::string number(double x)
+{
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+// One row to measure: what it varies, and the trace settings it renders the figure with.
+struct Trial {
+    std::string knob, value;
+    TraceSettings trace;
+};
+
+// Each trial's rays (one render), RMSE against the reference, and time: the median of `repeat`
+// rounds, each rendering every trial once (rounds.hpp).
+std::vector<TradeRow> measure(const Options& o, const std::vector<Trial>& trials, const Image& reference)
+{
+    const RenderSettings settings = render_settings(o.common);
+    std::vector<TradeRow> rows;
+    std::vector<std::function<void()>> renders;
+    for (const Trial& t : trials) {
+        reset_counters();
+        const Image image = ch03::render_figure(settings, t.trace);
+        rows.push_back({t.knob, t.value, 0.0, total_rays(total_counts()), rmse(image, reference)});
+        renders.push_back([&settings, &t] { ch03::render_figure(settings, t.trace); });
+    }
+    const std::vector<double> seconds = median_seconds_in_rounds(o.repeat, renders);
+    for (size_t k = 0; k < rows.size(); ++k)
+        rows[k].seconds = seconds[k];
+    return rows;
+}
+
+// The recursion's two limits against time and error: the depth with no weight cut-off, then the
+// cut-off at the reference's depth; then the figure's own settings with either reflectance. The
+// reference traces every path to `reference_depth` bounces with no cut-off.
+void sweep_render(const Options& o)
+{
+    TraceSettings deep;
+    deep.max_depth = o.reference_depth;
+    deep.min_weight = 0.0f;
+    std::cerr << "rendering the reference: depth " << o.reference_depth << ", no weight cut-off...\n";
+    const Image reference = ch03::render_figure(render_settings(o.common), deep);
+
+    std::vector<Trial> trials;
+    for (int d = 1; d <= 16; ++d) {
+        TraceSettings t = deep;
+        t.max_depth = d;
+        trials.push_back({"max_depth", std::to_string(d), t});
+    }
+    for (const float w : {0.3f, 0.1f, 0.03f, 0.01f, 3e-3f, 1e-3f, 1e-4f}) {
+        TraceSettings t = deep;
+        t.min_weight = w;
+        trials.push_back({"min_weight", number(w), t});
+    }
+    // The figure's settings (the kit's defaults), with either reflectance, against the reference's.
+    trials.push_back({"settings", "reference", deep});
+    TraceSettings schlick;
+    schlick.fresnel = FresnelModel::schlick;
+    trials.push_back({"settings", "default_exact", TraceSettings{}});
+    trials.push_back({"settings", "default_schlick", schlick});
+
+    std::cerr << "timing " << trials.size() << " renders, " << o.repeat << " rounds...\n";
+    const std::vector<TradeRow> rows = measure(o, trials, reference);
+    const std::string metric = "rmse_linear_rgb_vs_depth_" + std::to_string(o.reference_depth) + "_no_cutoff";
+    const std::vector<std::pair<std::string, std::string>> tables = {
+        {"max_depth", o.csv},
+        {"min_weight", sibling_csv(o.csv, "_weight")},
+        {"settings", sibling_csv(o.csv, "_settings")}};
+    for (const auto& [knob, path] : tables) {
+        TradeTable table{"03_reflection_refraction", metric, {}};
+        for (const TradeRow& row : rows)
+            if (row.knob == knob)
+                table.rows.push_back(row);
+        print_trade_table(std::cout, table);
+        std::cout << '\n';
+        write_trade_csv(path, table);
+    }
+}
+
+// Schlick against exact, per index of refraction and side, as a trade table (the error is the
+// largest absolute difference from the exact reflectance) and as the lesson's summary.
+void sweep_fresnel(const Options& o)
+{
+    const std::vector<fresnel_table::Row> rows = fresnel_table::measure_all({1.333f, 1.5f, 2.4f}, o.angles, o.repeat);
+    TradeTable table{"03_reflection_refraction", "max_abs_error_vs_exact_fresnel", {}};
+    for (const fresnel_table::Row& r : rows)
+        table.rows.push_back({"ior:side:formula", number(r.ior) + ":" + r.side + ":" + r.formula, r.seconds, r.calls,
+                              r.max_error});
+    print_trade_table(std::cout, table);
+    write_trade_csv(sibling_csv(o.csv, "_schlick"), table);
+
+    std::cout << "\n| ior | side | formula | max abs error | at (degrees) | ns per call |\n|---|---|---|---|---|---|\n";
+    for (const fresnel_table::Row& r : rows)
+        std::cout << "| " << number(r.ior) << " | " << r.side << " | " << r.formula << " | " << std::setprecision(3)
+                  << r.max_error << " | " << std::fixed << std::setprecision(2) << r.at_degrees << " | "
+                  << 1e9 * r.seconds / static_cast<double>(r.calls) << " |" << std::defaultfloat
+                  << std::setprecision(6) << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("03_reflection_refraction", [&] {
+        Options o;
+        o.common.out = "03_reflection_refraction.png";
+        CommandLine cli("03_reflection_refraction",
+                        "Reflection and refraction: Whitted's recursion, Snell's law, Fresnel and Schlick.");
+        add_common_options(cli, o.common);
+        cli.option("--depth", o.trace.max_depth, "the most bounces a path may take (0: ray casting)", 0, 64);
+        cli.option("--min-weight", o.trace.min_weight, "trace a secondary ray only when its weight is at least this",
+                   0.0f, 1.0f);
+        cli.option("--fresnel", o.fresnel, "the reflectance that splits glass's light: exact or schlick");
+        cli.flag("--sweep", o.sweep,
+                 "measure depth and weight cut-off against time and error, and Schlick against exact");
+        cli.option("--reference-depth", o.reference_depth, "depth of the sweep's reference render (no cut-off)", 16,
+                   64);
+        cli.option("--repeat", o.repeat, "timing rounds of the sweep, each running every row once; a row's time is "
+                   "its median", 1, 100);
+        cli.option("--angles", o.angles, "angles of incidence per row of the Fresnel table", 1001, 100000001);
+        cli.option("--csv", o.csv, "where --sweep writes its depth table (the others go beside it)");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        o.trace.fresnel = model_named(o.fresnel);
+        if (o.sweep) {
+            sweep_render(o);
+            sweep_fresnel(o);
+            std::cout << "\nwrote " << o.csv << " and its _weight, _settings and _schlick siblings\n";
+            return 0;
+        }
+        const Timer timer;
+        const Image image = ch03::render_figure(render_settings(o.common), o.trace);
+        const double seconds = timer.seconds();
+        write_png(o.common.out, image);
+        if (o.common.stats)
+            print_stats(std::cout, total_counts(), seconds);
+        return 0;
+    });
+}

@@ -1,0 +1,132 @@
+// EXERCISE 03.3: the exact reflectance of a clear dielectric interface (Fresnel's equations).
+#include "tests/ch03/optics_reference.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+using namespace rt;
+using namespace rt::grader;
+using optics::radians;
+
+namespace {
+
+std::string query(float cos_i, float ior)
+{
+    return optics::call("fresnel_dielectric", cos_i, ior);
+}
+
+void check_reflectance(float cos_i, float ior, double tolerance)
+{
+    const float R = fresnel_dielectric(cos_i, ior);
+    const double want = optics::fresnel_reference(cos_i, ior);
+    INFO(query(cos_i, ior) << ": got " << R << ", expected " << want);
+    REQUIRE(std::isfinite(R));
+    CHECK(std::abs(R - want) <= tolerance);
+}
+
+}  // namespace
+
+GRADED_TEST("fresnel_dielectric: head-on, R0 = ((n1 - n2) / (n1 + n2))^2 from either side: 0.04 for glass", "03.3", 2)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f})
+        for (const float cos_i : {1.0f, -1.0f})
+            check_reflectance(cos_i, ior, 1e-6);
+    const float glass = fresnel_dielectric(1.0f, 1.5f);
+    INFO(query(1.0f, 1.5f) << ": got " << glass << ", expected 0.04");
+    CHECK(std::abs(glass - 0.04f) <= 1e-6f);
+}
+
+GRADED_TEST("fresnel_dielectric: Fresnel's equations at every angle, entering and leaving, against double precision", "03.3", 3)
+{
+    // Within 0.5 degrees of the critical angle R climbs to 1 with an infinite slope, and the
+    // float cosine's rounding moves it further than 1e-5; the stability case looks there.
+    for (const float ior : {1.333f, 1.5f, 2.4f})
+        for (double angle = 0.0; angle <= 89.0; angle += 1.0)
+            for (const bool leaving : {false, true}) {
+                if (leaving && std::abs(angle - optics::critical_degrees(ior)) < 0.5)
+                    continue;
+                const float cos_i = static_cast<float>((leaving ? -1.0 : 1.0) * std::cos(radians(angle)));
+                check_reflectance(cos_i, ior, 1e-5);
+            }
+}
+
+GRADED_TEST("fresnel_dielectric: total internal reflection reflects everything (exactly 1), grazing incidence nearly so", "03.3", 2)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f}) {
+        for (const double angle : {optics::critical_degrees(ior) + 0.5, 60.0, 80.0, 90.0}) {
+            const float cos_i = -static_cast<float>(std::cos(radians(angle)));
+            const float R = fresnel_dielectric(cos_i, ior);
+            INFO(query(cos_i, ior) << ": got " << R << ", expected exactly 1 (beyond the critical angle "
+                 << optics::critical_degrees(ior) << ")");
+            CHECK(R == 1.0f);
+        }
+        // Entering at grazing incidence: R -> 1 as cos_i -> 0.
+        for (const float cos_i : {0.0f, 1e-3f, 0.02f})
+            check_reflectance(cos_i, ior, 1e-4);
+    }
+}
+
+GRADED_TEST("fresnel_dielectric: the same reflectance both ways along a path (entering at theta_i, leaving at theta_t)", "03.3", 2)
+{
+    // Reciprocity: light that enters at theta_i and goes on at theta_t reflects as much as light
+    // that comes back the same way, leaving at theta_t.
+    for (const float ior : {1.333f, 1.5f, 2.4f})
+        for (const double angle : {5.0, 30.0, 50.0, 70.0, 85.0}) {
+            const double theta_t = std::asin(std::sin(radians(angle)) / ior);
+            const float in = static_cast<float>(std::cos(radians(angle))), out = -static_cast<float>(std::cos(theta_t));
+            const float R_in = fresnel_dielectric(in, ior), R_out = fresnel_dielectric(out, ior);
+            INFO(query(in, ior) << " = " << R_in << "; " << query(out, ior) << " = " << R_out
+                 << "; expected both " << optics::fresnel_reference(in, ior));
+            CHECK(std::abs(R_in - R_out) <= 2e-5f);
+            CHECK(std::abs(R_in - optics::fresnel_reference(in, ior)) <= 1e-5);
+        }
+}
+
+STABILITY_TEST("fresnel_dielectric: at the critical angle and one float step either side, in [0.99, 1]; 0.01 degrees beyond, exactly 1", "03.3", 2)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f}) {
+        const double ior_d = ior;
+        const float critical_cos = static_cast<float>(std::sqrt(1.0 - 1.0 / (ior_d * ior_d)));
+        for (const float c : {std::nextafter(critical_cos, 0.0f), critical_cos, std::nextafter(critical_cos, 2.0f)}) {
+            const float R = fresnel_dielectric(-c, ior);
+            INFO(query(-c, ior) << ": got " << R << ", expected 0.99 to 1 at the critical angle "
+                 << optics::critical_degrees(ior));
+            REQUIRE(std::isfinite(R));
+            CHECK(R >= 0.99f);
+            CHECK(R <= 1.0f);
+        }
+        const double critical = optics::critical_degrees(ior);
+        const float beyond = -static_cast<float>(std::cos(radians(critical + 0.01)));
+        const float R_beyond = fresnel_dielectric(beyond, ior);
+        INFO(query(beyond, ior) << ": got " << R_beyond << ", expected exactly 1");
+        CHECK(R_beyond == 1.0f);
+        check_reflectance(-static_cast<float>(std::cos(radians(critical - 0.01))), ior, 2e-3);
+    }
+}
+
+STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazing or |cos_i| a hair above 1 stays in [0, 1]", "03.3", 2)
+{
+    // ior = 1 is no interface at all: nothing reflects, except at exactly grazing incidence, where
+    // both fractions would be 0 / 0 (the contract then says 1: sin^2(theta_t) = 1).
+    for (double angle = 0.0; angle <= 84.0; angle += 1.0)
+        for (const float sign : {1.0f, -1.0f}) {
+            const float cos_i = sign * static_cast<float>(std::cos(radians(angle)));
+            const float R = fresnel_dielectric(cos_i, 1.0f);
+            INFO(query(cos_i, 1.0f) << ": got " << R << ", expected 0");
+            CHECK(std::abs(R) <= 1e-6f);
+        }
+    for (const float cos_i : {0.0f, -0.0f, 1e-30f, -1e-30f})
+        for (const float ior : {1.0f, 1.5f}) {
+            const float R = fresnel_dielectric(cos_i, ior);
+            INFO(query(cos_i, ior) << ": got " << R << ", expected 1 (grazing)");
+            REQUIRE(std::isfinite(R));
+            CHECK(std::abs(R - 1.0f) <= 1e-6f);
+        }
+    // A cosine from float-normalised vectors can be 1 + 1e-7: R0 still.
+    for (const float cos_i : {std::nextafter(1.0f, 2.0f), -std::nextafter(1.0f, 2.0f)}) {
+        const float R = fresnel_dielectric(cos_i, 1.5f);
+        INFO(query(cos_i, 1.5f) << ": got " << R << ", expected R0 = 0.04");
+        REQUIRE(std::isfinite(R));
+        CHECK(std::abs(R - 0.04f) <= 1e-6f);
+    }
+}

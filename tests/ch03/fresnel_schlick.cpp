@@ -1,0 +1,98 @@
+// EXERCISE 03.4: Schlick's approximation, with the cosine of the less dense side.
+#include "tests/ch03/optics_reference.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+using namespace rt;
+using namespace rt::grader;
+using optics::radians;
+
+namespace {
+
+std::string query(float cos_i, float ior)
+{
+    return optics::call("fresnel_schlick", cos_i, ior);
+}
+
+// Schlick's curve of cos_i whatever the side: the classic bug, for the failure message.
+double with_cos_i(float cos_i, float ior)
+{
+    const double r0 = (ior - 1.0) / (ior + 1.0);
+    return r0 * r0 + (1.0 - r0 * r0) * std::pow(1.0 - std::abs(static_cast<double>(cos_i)), 5.0);
+}
+
+void check_schlick(float cos_i, float ior, double tolerance)
+{
+    const float R = fresnel_schlick(cos_i, ior);
+    const double want = optics::schlick_reference(cos_i, ior);
+    INFO(query(cos_i, ior) << ": got " << R << ", expected " << want
+         << " (Schlick's curve of cos_i everywhere would give " << with_cos_i(cos_i, ior) << ")");
+    REQUIRE(std::isfinite(R));
+    CHECK(std::abs(R - want) <= tolerance);
+}
+
+}  // namespace
+
+GRADED_TEST("fresnel_schlick: entering, R0 + (1 - R0)(1 - cos_i)^5: R0 head-on, 1 at grazing", "03.4", 2)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f})
+        for (const float cos_i : {1.0f, 0.8f, 0.5f, 0.2f, 0.05f, 0.0f})
+            check_schlick(cos_i, ior, 1e-6);
+}
+
+GRADED_TEST("fresnel_schlick: leaving the denser medium takes cos_t, not cos_i (the classic bug stays near R0 up to the critical angle)", "03.4", 3)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f}) {
+        const double critical = optics::critical_degrees(ior);
+        for (const double angle : {0.0, 10.0, critical - 8.0, critical - 3.0, critical - 1.0, critical - 0.2})
+            check_schlick(-static_cast<float>(std::cos(radians(angle))), ior, 1e-4);
+    }
+}
+
+GRADED_TEST("fresnel_schlick: beyond the critical angle exactly 1 (total internal reflection)", "03.4", 2)
+{
+    for (const float ior : {1.333f, 1.5f, 2.4f})
+        for (const double angle : {optics::critical_degrees(ior) + 0.5, 60.0, 89.0, 90.0}) {
+            const float cos_i = -static_cast<float>(std::cos(radians(angle)));
+            const float R = fresnel_schlick(cos_i, ior);
+            INFO(query(cos_i, ior) << ": got " << R << ", expected exactly 1 (Schlick's curve of cos_i would give "
+                 << with_cos_i(cos_i, ior) << ")");
+            CHECK(R == 1.0f);
+        }
+}
+
+GRADED_TEST("fresnel_schlick: into a bubble of air in water (ior 1 / 1.333) the denser side is outside: cos_t entering, cos_i leaving", "03.4", 2)
+{
+    const float bubble = 1.0f / 1.333f;
+    for (const double angle : {0.0, 20.0, 40.0, 47.0, 60.0})
+        for (const float sign : {1.0f, -1.0f})
+            check_schlick(sign * static_cast<float>(std::cos(radians(angle))), bubble, 1e-4);
+}
+
+STABILITY_TEST("fresnel_schlick: within 0.06 (water), 0.037 (glass), 0.075 (diamond) of the exact reflectance at every angle, both ways, never a NaN", "03.4", 2)
+{
+    // Schlick's worst error, measured with the right cosine, is the same entering and leaving:
+    // 0.059, 0.036 and 0.074 (NUMERICS.md; the chapter's --sweep measures it again).
+    struct Case {
+        float ior;
+        double bound;
+    };
+    for (const Case& c : {Case{1.333f, 0.0602}, Case{1.5f, 0.0367}, Case{2.4f, 0.0750}})
+        for (int k = 0; k <= 9000; ++k)
+            for (const float sign : {1.0f, -1.0f}) {
+                const float cos_i = sign * static_cast<float>(std::cos(radians(0.01 * k)));
+                const float R = fresnel_schlick(cos_i, c.ior);
+                const double exact = optics::fresnel_reference(cos_i, c.ior);
+                INFO(query(cos_i, c.ior) << ": got " << R << ", the exact reflectance is " << exact
+                     << "; Schlick stays within " << c.bound);
+                REQUIRE(std::isfinite(R));
+                REQUIRE(std::abs(R - exact) <= c.bound);
+            }
+    for (const float cos_i : {0.0f, -0.0f, std::nextafter(1.0f, 2.0f), -std::nextafter(1.0f, 2.0f)}) {
+        const float R = fresnel_schlick(cos_i, 1.5f);
+        INFO(query(cos_i, 1.5f) << ": got " << R << ", expected 1 at grazing, R0 = 0.04 head-on");
+        REQUIRE(std::isfinite(R));
+        CHECK(std::abs(R - (cos_i == 0.0f ? 1.0f : 0.04f)) <= 1e-6f);
+    }
+}

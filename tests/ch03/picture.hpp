@@ -1,0 +1,19 @@
+// The small picture that chapter 03's picture test renders, shared with make_references so that
+// the reference and the test render exactly the same thing.
+#pragma once
+
+#include "03_reflection_refraction/figure.hpp"
+
+namespace rt::pictures {
+
+inline Image ch03()
+{
+    RenderSettings s;
+    s.width = 96;
+    s.height = 54;
+    s.spp = 1;
+    s.show_progress = false;
+    return ch03::render_figure(s);
+}
+
+}  // namespace rt::pictures

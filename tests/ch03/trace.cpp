@@ -1,0 +1,178 @@
+// EXERCISE 03.5: Whitted's recursion: local shade plus k_r S plus k_t T, with a depth limit and a
+// cut-off on a ray's weight.
+#include "tests/ch03/optics_reference.hpp"
+#include "tests/ch03/picture.hpp"
+#include "tests/ch03/trace_scenes.hpp"
+
+#include <cmath>
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::traces;
+
+GRADED_TEST("trace: a ray that misses sees the sky; one that hits a dull wall sees its local shade, and no secondary ray is traced", "03.5", 3)
+{
+    WhittedScene scene = empty_scene();
+    const color wall_albedo{0.6f, 0.5f, 0.3f};
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, wall_albedo, Material{});
+    const TraceSettings settings;
+
+    const Traced miss = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, 1}}, settings);
+    INFO(miss.report << "; expected the sky " << show(sky));
+    CHECK(near(miss.colour, sky));
+
+    const color expected = lit(scene, wall_albedo, {0, 0, 1});
+    const Traced hit = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    INFO(hit.report << "; expected the wall's local shade " << show(expected) << " and no secondary rays");
+    CHECK(near(hit.colour, expected));
+    CHECK(hit.rays.reflected == 0);
+    CHECK(hit.rays.refracted == 0);
+}
+
+GRADED_TEST("trace: a mirror adds k_s times what its reflected ray sees (Whitted's k_s S), and stops at max_depth = 0", "03.5", 3)
+{
+    // A mirror floor (k_s = 0.7, a dull grey of its own) before a red wall at z = -5: the ray comes
+    // down at 45 degrees onto the floor at (0.3, 0, -1) and its reflection meets the wall at
+    // (0.3, 4, -5).
+    WhittedScene scene = empty_scene();
+    const color floor_albedo{0.1f}, wall_albedo{0.9f, 0.2f, 0.1f};
+    add_square(scene, {0, 0, -2}, {1, 0, 0}, {0, 0, -1}, 3.0f, floor_albedo, mirror(0.7f));
+    add_square(scene, {0, 2, -5}, {1, 0, 0}, {0, 1, 0}, 3.0f, wall_albedo, Material{});
+    const Ray ray{{0.3f, 1, 0}, glm::normalize(vec3(0, -1, -1))};
+    const color floor_local = lit(scene, floor_albedo, {0, 1, 0}), wall_local = lit(scene, wall_albedo, {0, 0, 1});
+
+    TraceSettings settings;
+    const Traced once = run(scene, ray, settings);
+    const color expected = floor_local + 0.7f * wall_local;
+    INFO(once.report << "; expected the floor's local shade " << show(floor_local) << " + 0.7 x the wall's "
+         << show(wall_local) << " = " << show(expected) << ", after 1 reflected ray");
+    CHECK(near(once.colour, expected));
+    CHECK(once.rays.reflected == 1);
+    CHECK(once.rays.refracted == 0);
+
+    settings.max_depth = 0;
+    const Traced casting = run(scene, ray, settings);
+    INFO(casting.report << "; at max_depth 0 expected the floor's local shade alone, " << show(floor_local));
+    CHECK(near(casting.colour, floor_local));
+    CHECK(casting.rays.reflected == 0);
+}
+
+GRADED_TEST("trace: between two facing mirrors the recursion stops after max_depth bounces", "03.5", 3)
+{
+    // Every bounce adds L = albedo * ambient, k_s times less each time: after d bounces the colour
+    // is L (1 + k_s + ... + k_s^d), from d reflected rays.
+    const float k_s = 0.8f;
+    const WhittedScene scene = facing_mirrors(k_s);
+    const color L = mirror_albedo * ambient;
+    for (const int depth : {0, 1, 2, 5, 12}) {
+        TraceSettings settings;
+        settings.max_depth = depth;
+        settings.min_weight = 0.0f;
+        const Traced got = run(scene, between_mirrors, settings);
+        color expected(0.0f);
+        float k = 1.0f;
+        for (int j = 0; j <= depth; ++j, k *= k_s)
+            expected += k * L;
+        INFO(got.report << "; expected " << show(expected) << " after " << depth << " reflected rays");
+        CHECK(got.rays.reflected == static_cast<std::uint64_t>(depth));
+        CHECK(near(got.colour, expected));
+    }
+}
+
+GRADED_TEST("trace: a ray whose weight would fall below min_weight is not traced, whatever max_depth allows", "03.5", 3)
+{
+    // Mirrors with k_s = 0.5: the reflected rays weigh 0.5, 0.25, 0.125, 0.0625, ...
+    const WhittedScene mirrors = facing_mirrors(0.5f);
+    const color L = mirror_albedo * ambient;
+    struct Case {
+        float min_weight;
+        int rays;
+        float sum;  // 1 + 0.5 + ... over the bounces traced
+    };
+    for (const Case& c : {Case{0.3f, 1, 1.5f}, Case{0.1f, 3, 1.875f}, Case{0.01f, 6, 1.984375f}}) {
+        TraceSettings settings;
+        settings.max_depth = 16;
+        settings.min_weight = c.min_weight;
+        const Traced got = run(mirrors, between_mirrors, settings);
+        INFO(got.report << "; mirrors of k_s = 0.5: expected " << c.rays << " reflected rays and " << show(c.sum * L));
+        CHECK(got.rays.reflected == static_cast<std::uint64_t>(c.rays));
+        CHECK(near(got.colour, c.sum * L));
+    }
+    // Glass head-on reflects F = 0.04: with min_weight 0.05 only the refracted rays are traced,
+    // in and out, and 0.96^2 of the sky comes through.
+    TraceSettings settings;
+    settings.min_weight = 0.05f;
+    const Traced glass = run(glass_sphere(1.5f), Ray{{0, 0, 0}, {0, 0, -1}}, settings);
+    INFO(glass.report << "; through a glass sphere with min_weight 0.05: expected 0 reflected and 2 refracted rays and "
+         << show(0.9216f * sky));
+    CHECK(glass.rays.reflected == 0);
+    CHECK(glass.rays.refracted == 2);
+    CHECK(near(glass.colour, 0.9216f * sky));
+}
+
+GRADED_TEST("trace: glass splits its light by Fresnel; through the centre of a glass sphere the sky comes back F + (1 - F)^2 times", "03.5", 3)
+{
+    // Head-on, F = 0.04 at both surfaces. At max_depth 2: F S (the front's reflection, which sees
+    // the sky behind the eye) + (1 - F) [F x 0 (the glass itself, at the depth limit) + (1 - F) S].
+    TraceSettings settings;
+    settings.max_depth = 2;
+    settings.min_weight = 0.0f;
+    const double F = optics::fresnel_reference(1.0, 1.5);
+    const color expected = static_cast<float>(F + (1.0 - F) * (1.0 - F)) * sky;
+    const Traced got = run(glass_sphere(1.5f), Ray{{0, 0, 0}, {0, 0, -1}}, settings);
+    INFO(got.report << "; expected " << show(expected) << " after 2 reflected and 2 refracted rays");
+    CHECK(near(got.colour, expected));
+    CHECK(got.rays.reflected == 2);
+    CHECK(got.rays.refracted == 2);
+}
+
+GRADED_TEST("trace: settings.fresnel picks the reflectance, and total internal reflection traces no refracted ray", "03.5", 2)
+{
+    // At max_depth 1 a ray that meets the glass at 60 degrees sees F S: the refracted ray finds
+    // only the glass's far side (no colour of its own) at the depth limit.
+    const WhittedScene scene = glass_sphere(1.5f);
+    const float height = static_cast<float>(std::sin(optics::radians(60.0)));
+    const Ray oblique{{0, height, 0}, {0, 0, -1}};
+    const double cos_i = std::cos(optics::radians(60.0));
+    for (const FresnelModel model : {FresnelModel::exact, FresnelModel::schlick}) {
+        TraceSettings settings;
+        settings.max_depth = 1;
+        settings.fresnel = model;
+        const double F = model == FresnelModel::exact ? optics::fresnel_reference(cos_i, 1.5)
+                                                      : optics::schlick_reference(cos_i, 1.5);
+        const Traced got = run(scene, oblique, settings);
+        INFO(got.report << "; at 60 degrees expected F S = " << F << " x the sky = "
+             << show(static_cast<float>(F) * sky));
+        CHECK(near(got.colour, static_cast<float>(F) * sky, 2e-5f));
+        CHECK(got.rays.reflected == 1);
+        CHECK(got.rays.refracted == 1);
+    }
+    // From inside, 0.9 above the centre, along +x: the wall is met at 64 degrees, beyond the
+    // critical 41.8: one reflected ray, no refracted one.
+    TraceSettings settings;
+    settings.max_depth = 1;
+    const Traced tir = run(scene, Ray{{0, 0.9f, -3}, {1, 0, 0}}, settings);
+    INFO(tir.report << "; expected black (the glass has no colour of its own) after 1 reflected and 0 refracted rays");
+    CHECK(tir.rays.reflected == 1);
+    CHECK(tir.rays.refracted == 0);
+    CHECK(near(tir.colour, color(0.0f)));
+}
+
+STABILITY_TEST("trace: no NaN or infinity in the figure at depth 16 with no cut-off, grazing silhouettes included", "03.5", 1)
+{
+    RenderSettings s;
+    s.width = 64;
+    s.height = 36;
+    s.show_progress = false;
+    TraceSettings deep;
+    deep.max_depth = 16;
+    deep.min_weight = 0.0f;
+    reset_counters();
+    const Image image = ch03::render_figure(s, deep);
+    const Rays rays = secondary_rays();
+    INFO("chapter 03's figure at 64x36, " << show(deep) << ": " << count_non_finite(image)
+         << " pixels with a NaN or infinity, after " << show(rays));
+    CHECK(count_non_finite(image) == 0);
+    CHECK(rays.reflected > 0);
+    CHECK(rays.refracted > 0);
+}
