@@ -58,6 +58,14 @@ void print_trade_table(std::ostream& out, const TradeTable& table)
             << row.error << std::defaultfloat << '\n';
 }
 
+std::string csv_beside(const std::string& path, const std::string& suffix)
+{
+    const std::string extension = ".csv";
+    const bool has_extension =
+        path.size() >= extension.size() && path.compare(path.size() - extension.size(), extension.size(), extension) == 0;
+    return (has_extension ? path.substr(0, path.size() - extension.size()) : path) + suffix + extension;
+}
+
 void write_trade_csv(const std::string& path, const TradeTable& table)
 {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();

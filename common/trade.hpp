@@ -34,6 +34,10 @@ double median_seconds(int repeats, const std::function<void()>& work);
 
 void print_trade_table(std::ostream& out, const TradeTable& table);
 
+// Where a second table of the same run goes, beside `path`: ("out/name.csv", "_missed") gives
+// "out/name_missed.csv"; a path not ending in .csv gets the suffix and ".csv" appended.
+std::string csv_beside(const std::string& path, const std::string& suffix);
+
 // CSV columns: chapter,knob,value,seconds,rays,rays_per_second,error,error_metric.
 // Throws InputError naming the path when it cannot be written.
 void write_trade_csv(const std::string& path, const TradeTable& table);

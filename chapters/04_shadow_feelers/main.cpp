@@ -1,0 +1,287 @@
+// Chapter 04's program: renders the figure (a sphere with a hard shadow from a point light) with
+// the offset and shadow query of your choice, at any scale, and with --sweep measures the two
+// trades: how often each offset re-hits its own surface or misses a real occluder, at scales from
+// 1e-4 to 1e6; and what shadow feelers cost, any-hit against closest-hit.
+#include "04_shadow_feelers/figure.hpp"
+#include "04_shadow_feelers/self_intersection.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/trade.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    std::string offset = "robust";
+    std::string feelers = "any-hit";
+    float scale = 1.0f;
+    bool sweep = false;
+    int probes = 100000;
+    int repeat = 7;
+    std::string csv = "04_shadow_feelers.csv";
+};
+
+const std::vector<std::pair<std::string, Offset>> offsets = {
+    {"none", Offset::none}, {"t-min", Offset::t_min}, {"normal", Offset::normal}, {"robust", Offset::robust}};
+
+FeelerSettings feelers_named(const Options& o)
+{
+    const std::map<std::string, Offset> offset_names(offsets.begin(), offsets.end());
+    const std::map<std::string, ShadowQuery> queries{
+        {"any-hit", ShadowQuery::any_hit}, {"closest-hit", ShadowQuery::closest_hit}, {"off", ShadowQuery::off}};
+    if (!offset_names.count(o.offset))
+        throw InputError("--offset takes none, t-min, normal or robust, got '" + o.offset + "'");
+    if (!queries.count(o.feelers))
+        throw InputError("--feelers takes any-hit, closest-hit or off, got '" + o.feelers + "'");
+    return {offset_names.at(o.offset), queries.at(o.feelers)};
+}
+
+// --- The measured problem: self-intersection by scale ---
+
+struct Case {
+    std::string name;  // what the table's title says
+    self_intersection::Surface surface;
+    self_intersection::Side side;
+    self_intersection::PointFrom from;
+    float eye_distance = 3.0f;  // in units of S
+};
+
+// 0%, 0.0035%, 3.5%, 45%, 100%: two significant digits, never in exponent form.
+std::string percent(double rate)
+{
+    std::ostringstream s;
+    const double p = 100.0 * rate;
+    if (p == 0.0 || p >= 10.0)
+        s << std::fixed << std::setprecision(0) << p << '%';
+    else
+        s << std::setprecision(2) << p << '%';
+    return s.str();
+}
+
+// 1e-4, ..., 1, ..., 1e6: the scales as powers of ten.
+std::string power_of_ten(float scale)
+{
+    const int k = static_cast<int>(std::lround(std::log10(scale)));
+    return k == 0 ? "1" : "1e" + std::to_string(k);
+}
+
+// A markdown table per case: a row per scale, a column per offset, each cell the re-hit rate and,
+// for front-side feelers, the rate of occluders missed. Every row also goes into the trade tables.
+void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& missed_table)
+{
+    using namespace self_intersection;
+    const std::vector<Case> cases = {
+        {"triangles (icosphere), feelers toward a light outside", Surface::triangles, Side::front, PointFrom::surface},
+        {"triangles, feelers into the object (back side)", Surface::triangles, Side::back, PointFrom::surface},
+        {"a sphere, feelers toward a light outside", Surface::sphere, Side::front, PointFrom::surface},
+        {"a floor through y = 0, 20 S square, feelers up", Surface::floor, Side::front, PointFrom::surface},
+        {"a floor through y = 0, feelers down (back side)", Surface::floor, Side::back, PointFrom::surface},
+        {"triangles seen from 1000 S away, hit point from the surface", Surface::triangles, Side::front, PointFrom::surface, 1000.0f},
+        {"triangles seen from 1000 S away, hit point from ray.at(t)", Surface::triangles, Side::front, PointFrom::ray, 1000.0f},
+        {"a sphere seen from 1000 S away, hit point from the surface", Surface::sphere, Side::front, PointFrom::surface, 1000.0f},
+        {"a sphere seen from 1000 S away, hit point from ray.at(t)", Surface::sphere, Side::front, PointFrom::ray, 1000.0f},
+    };
+    for (const Case& c : cases) {
+        const bool front = c.side == Side::front;
+        std::cout << "\n" << c.name << (front ? ": re-hits / occluders missed" : ": re-hits") << "\n\n| S |";
+        for (const auto& [name, offset] : offsets)
+            std::cout << ' ' << name << " |";
+        std::cout << "\n|---|";
+        for (size_t k = 0; k < offsets.size(); ++k)
+            std::cout << "---|";
+        std::cout << '\n';
+        for (const float scale : self_intersection::scales) {
+            const ScaledScene scene = scaled_scene(scale);
+            const std::vector<SurfacePoint> points = surface_points(scene, c.surface, o.probes, 1, c.from, c.eye_distance);
+            std::cout << "| " << power_of_ten(scale) << " |";
+            for (const auto& [name, offset] : offsets) {
+                Score score;
+                const double seconds = median_seconds(1, [&] { score = measure(scene, points, offset, c.side, 2); });
+                std::cout << ' ' << percent(score.rehit_rate());
+                if (front)
+                    std::cout << " / " << percent(score.missed_rate());
+                std::cout << " |";
+                std::ostringstream value;
+                value << (c.surface == Surface::sphere ? "sphere" : c.surface == Surface::floor ? "floor" : "triangles") << ':' << (front ? "front" : "back")
+                      << ':' << (c.from == PointFrom::surface ? "surface" : "ray") << ':' << c.eye_distance << "S:" << name
+                      << ':' << power_of_ten(scale);
+                rehit_table.rows.push_back({"surface:side:point:eye:offset:scale", value.str(), seconds, score.feelers,
+                                            score.rehit_rate()});
+                if (front)
+                    missed_table.rows.push_back({"surface:side:point:eye:offset:scale", value.str(), seconds,
+                                                 score.feelers, score.missed_rate()});
+            }
+            std::cout << '\n';
+        }
+    }
+}
+
+// --- The cost of shadow feelers: any-hit against closest-hit ---
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The figure rendered without feelers, with any-hit feelers and with closest-hit ones. The runs are
+// interleaved (one of each per round, --repeat rounds) so that a change in the machine's load
+// falls on every row alike; each row's time is its median. The feelers' own cost is a row's time
+// minus that of the row without them.
+void measure_feeler_cost(const Options& o, TradeTable& table)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.show_progress = false;
+    const std::vector<std::pair<std::string, ShadowQuery>> queries = {
+        {"off", ShadowQuery::off}, {"any-hit", ShadowQuery::any_hit}, {"closest-hit", ShadowQuery::closest_hit}};
+    std::vector<Image> images;
+    std::vector<Counts> counts;
+    for (const auto& query : queries) {
+        reset_counters();
+        images.push_back(ch04::render_figure(settings, {Offset::robust, query.second}));
+        counts.push_back(total_counts());
+    }
+    std::vector<std::vector<double>> runs(queries.size());
+    for (int round = 0; round < o.repeat; ++round)
+        for (size_t q = 0; q < queries.size(); ++q) {
+            const Timer timer;
+            ch04::render_figure(settings, {Offset::robust, queries[q].second});
+            runs[q].push_back(timer.seconds());
+        }
+    const double seconds_off = median(runs[0]);
+    const double feelers_any_hit = median(runs[1]) - seconds_off;
+    const auto tests_of = [&](size_t q) {
+        return static_cast<double>(counts[q][static_cast<size_t>(Counter::intersection_tests)]);
+    };
+    std::cout << "\nthe figure at " << settings.width << "x" << settings.height << ", " << settings.spp
+              << " spp, median of " << o.repeat << " interleaved runs\n\n"
+              << "| feelers | seconds | rays | rays/second | shadow rays | tests per shadow ray | seconds in feelers "
+                 "| vs any-hit | RMSE vs any-hit |\n|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t q = 0; q < queries.size(); ++q) {
+        const double seconds = median(runs[q]);
+        const std::uint64_t rays = total_rays(counts[q]);
+        const auto shadow = counts[q][static_cast<size_t>(Counter::shadow_rays)];
+        const double per_shadow_ray = shadow ? (tests_of(q) - tests_of(0)) / static_cast<double>(shadow) : 0.0;
+        const double error = rmse(images[q], images[1]);
+        std::cout << "| " << queries[q].first << " | " << std::fixed << std::setprecision(3) << seconds << " | " << rays
+                  << " | " << std::setprecision(0) << static_cast<double>(rays) / seconds << " | " << shadow << " | "
+                  << std::setprecision(1) << per_shadow_ray << " | " << std::setprecision(3) << seconds - seconds_off
+                  << " | " << std::setprecision(2) << (seconds - seconds_off) / feelers_any_hit << " | "
+                  << std::scientific << std::setprecision(2) << error << std::defaultfloat << " |\n";
+        table.rows.push_back({"feelers", queries[q].first, seconds, rays, error});
+    }
+}
+
+// Where the any-hit query saves: every feeler the figure sends, asked both ways on one thread, its
+// intersection tests counted and its time taken, with blocked and unblocked feelers apart.
+void feeler_tests_by_outcome(const Options& o)
+{
+    const Camera cam = make_camera(ch04::figure_camera(o.common.width, o.common.height));
+    const LitScene scene = ch04::figure_scene();
+    struct Tally {
+        std::uint64_t feelers = 0, tests[2] = {0, 0};
+        double seconds[2] = {0.0, 0.0};  // [0] any-hit, [1] closest-hit
+    } blocked, seen, all;
+    const auto tests = [] { return local_counts()[static_cast<size_t>(Counter::intersection_tests)]; };
+    for (int j = 0; j < o.common.height; ++j)
+        for (int i = 0; i < o.common.width; ++i) {
+            const Ray ray = primary_ray(cam, static_cast<float>(i), static_cast<float>(j));
+            const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
+            if (!hit)
+                continue;
+            const vec3 n = glm::dot(hit->n, ray.dir) > 0.0f ? -hit->n : hit->n;
+            for (const PointLight& light : scene.lights) {
+                if (glm::dot(n, light.position - hit->p) <= 0.0f)
+                    continue;  // shade sends no feeler toward a light behind the surface
+                const RayStart start = ray_start(hit->p, hit->n, light.position - hit->p, Offset::robust);
+                bool is_blocked = false;
+                std::uint64_t used[2];
+                double seconds[2];
+                for (int q = 0; q < 2; ++q) {
+                    const std::uint64_t before = tests();
+                    const Timer timer;
+                    const bool b = q == 0 ? occluded(scene, start.origin, light.position, start.t_min)
+                                          : occluded_by_closest_hit(scene, start.origin, light.position, start.t_min);
+                    seconds[q] = timer.seconds();
+                    used[q] = tests() - before;
+                    is_blocked = is_blocked || b;
+                }
+                for (Tally* t : {is_blocked ? &blocked : &seen, &all}) {
+                    ++t->feelers;
+                    for (int q = 0; q < 2; ++q) {
+                        t->tests[q] += used[q];
+                        t->seconds[q] += seconds[q];
+                    }
+                }
+            }
+        }
+    std::cout << "\nper feeler, asked both ways (" << scene.spheres.size() + scene.triangles.size() << " objects)\n\n"
+              << "| feelers | share | any-hit tests | closest-hit tests | any-hit ns | closest-hit ns |\n"
+                 "|---|---|---|---|---|---|\n";
+    for (const auto& [name, t] : {std::pair<const char*, const Tally&>{"blocked", blocked}, {"unblocked", seen}, {"all", all}}) {
+        const double n = static_cast<double>(std::max<std::uint64_t>(1, t.feelers));
+        std::cout << "| " << name << " | " << percent(static_cast<double>(t.feelers) / static_cast<double>(std::max<std::uint64_t>(1, all.feelers)))
+                  << " | " << std::fixed << std::setprecision(1) << static_cast<double>(t.tests[0]) / n << " | "
+                  << static_cast<double>(t.tests[1]) / n << " | " << std::setprecision(0) << 1e9 * t.seconds[0] / n
+                  << " | " << 1e9 * t.seconds[1] / n << std::defaultfloat << " |\n";
+    }
+}
+
+void sweep(const Options& o)
+{
+    std::cerr << "measuring self-intersection at scales 1e-4 to 1e6, then the cost of the feelers...\n";
+    TradeTable rehits{"04_shadow_feelers", "fraction of feelers re-hitting their own surface", {}};
+    TradeTable missed{"04_shadow_feelers", "fraction of occluders 0.25 S above the surface missed", {}};
+    TradeTable cost{"04_shadow_feelers", "rmse_linear_rgb_vs_any_hit_feelers", {}};
+    measure_offsets(o, rehits, missed);
+    measure_feeler_cost(o, cost);
+    feeler_tests_by_outcome(o);
+    const std::string missed_csv = csv_beside(o.csv, "_missed"), cost_csv = csv_beside(o.csv, "_cost");
+    write_trade_csv(o.csv, rehits);
+    write_trade_csv(missed_csv, missed);
+    write_trade_csv(cost_csv, cost);
+    std::cout << "\nwrote " << o.csv << ", " << missed_csv << " and " << cost_csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("04_shadow_feelers", [&] {
+        Options o;
+        o.common.out = "04_shadow_feelers.png";
+        CommandLine cli("04_shadow_feelers", "Shadow feelers: local shading, point lights, hard shadows, no acne.");
+        add_common_options(cli, o.common);
+        cli.option("--offset", o.offset, "how feelers leave the surface: none, t-min, normal or robust");
+        cli.option("--feelers", o.feelers, "the shadow query: any-hit, closest-hit or off (no shadows)");
+        cli.option("--scale", o.scale, "multiply every length of the scene and camera by this", 0.0f, 1e7f);
+        cli.flag("--sweep", o.sweep, "measure self-intersection by scale and offset, and what feelers cost");
+        cli.option("--probes", o.probes, "feelers per scale and offset in the sweep", 1000, 100000000);
+        cli.option("--repeat", o.repeat, "renders per feeler-cost row; the table gives the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its tables (*_missed.csv and *_cost.csv beside it)");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        const FeelerSettings feelers = feelers_named(o);
+        if (o.sweep) {
+            sweep(o);
+            return 0;
+        }
+        const Timer timer;
+        const Image image = ch04::render_figure(render_settings(o.common), feelers, o.scale);
+        const double seconds = timer.seconds();
+        write_png(o.common.out, image);
+        if (o.common.stats)
+            print_stats(std::cout, total_counts(), seconds);
+        return 0;
+    });
+}

@@ -1,0 +1,74 @@
+// Chapter 04's scene: chapter 02's spheres and triangles, a material per object, point lights and
+// an ambient light. That is all local shading with shadow feelers reads (DESIGN.md: model only what
+// a scene requires): a material has only the fields the shading formula uses.
+//
+// The shapes sit in flat arrays of geometry only (what the intersection tests read); each shape
+// names its material by index, in an array beside it. A hit names its object by one number:
+// spheres first, then triangles, as in chapter 02.
+#pragma once
+
+#include "02_spheres_triangles/shapes.hpp"
+
+#include <cassert>
+#include <vector>
+
+namespace rt {
+
+// What the local shading of EXERCISE 04.1 reads: the parameters of Phong's reflection model
+// (Phong 1975), which 04.1 evaluates with Blinn's halfway vector (Blinn 1977), as Shirley's
+// Fundamentals of Computer Graphics writes it. The ambient term reflects with `diffuse` too.
+struct PhongMaterial {
+    color diffuse{0.0f};     // k_d: the fraction of light reflected in every direction, per channel
+    color specular{0.0f};    // k_s: the highlight's colour (white for plastic, the metal's own for metal)
+    float shininess = 1.0f;  // p: the highlight's exponent; larger is smaller and sharper
+};
+
+// A point light: all its light leaves one point (the slides' "point sampling source"), so a
+// shadow is either there or not: hard. `intensity` is the light arriving 1 unit away; at distance
+// d it is intensity / d^2.
+struct PointLight {
+    point3 position;
+    color intensity;
+};
+
+struct LitScene {
+    std::vector<Sphere> spheres;
+    std::vector<int> sphere_material;    // sphere_material[k] indexes `materials` for spheres[k]
+    std::vector<Triangle> triangles;
+    std::vector<int> triangle_material;
+    std::vector<PhongMaterial> materials;
+
+    std::vector<PointLight> lights;
+    color ambient{0.0f};     // light arriving from everywhere, with no direction and no shadow
+    color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
+
+    bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
+    int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
+
+    const PhongMaterial& material_of(int object) const
+    {
+        return materials[object_is_sphere(object) ? sphere_material[object] : triangle_material[triangle_index(object)]];
+    }
+
+    int add_material(const PhongMaterial& m)
+    {
+        materials.push_back(m);
+        return static_cast<int>(materials.size()) - 1;
+    }
+
+    void add_sphere(const Sphere& sphere, int material)
+    {
+        assert(material >= 0 && material < static_cast<int>(materials.size()));
+        spheres.push_back(sphere);
+        sphere_material.push_back(material);
+    }
+
+    void add_triangle(const Triangle& tri, int material)
+    {
+        assert(material >= 0 && material < static_cast<int>(materials.size()));
+        triangles.push_back(tri);
+        triangle_material.push_back(material);
+    }
+};
+
+}  // namespace rt

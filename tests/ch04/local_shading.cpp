@@ -1,0 +1,106 @@
+// EXERCISE 04.1: local shading of one light, light * (k_d max(0, n.l) + k_s max(0, n.h)^p).
+#include "tests/ch04/describe.hpp"
+
+#include <cmath>
+#include <limits>
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+const vec3 up{0, 1, 0};
+
+// The direction at `degrees` from +y toward +x (or -x for negative angles), in the xy plane.
+vec3 tilted(double degrees)
+{
+    const double a = degrees * pi / 180.0;
+    return {static_cast<float>(std::sin(a)), static_cast<float>(std::cos(a)), 0.0f};
+}
+
+// The expected answer in double, from the formula.
+color reference(const PhongMaterial& m, const vec3& n, const vec3& v, const vec3& l, const color& light)
+{
+    const double cos_l = glm::dot(dvec3(n), dvec3(l));
+    if (cos_l <= 0)
+        return color(0.0f);
+    const dvec3 h = dvec3(l) + dvec3(v);
+    const double cos_h = glm::dot(h, h) > 0 ? glm::dot(dvec3(n), glm::normalize(h)) : 0.0;
+    const double spec = cos_h > 0 ? std::pow(cos_h, static_cast<double>(m.shininess)) : 0.0;
+    return color(dvec3(light) * (dvec3(m.diffuse) * cos_l + dvec3(m.specular) * spec));
+}
+
+std::string query(const PhongMaterial& m, const vec3& n, const vec3& v, const vec3& l, const color& light)
+{
+    return show(m) + ", normal " + show(n) + ", toward the eye " + show(v) + ", toward the light " + show(l) +
+           ", light arriving " + show(light);
+}
+
+// Checks one call against the formula.
+void check(const PhongMaterial& m, const vec3& n, const vec3& v, const vec3& l, const color& light)
+{
+    const color got = local_shading(m, n, v, l, light);
+    const color want = reference(m, n, v, l, light);
+    INFO(query(m, n, v, l, light) << ": got " << show(got) << ", expected " << show(want));
+    CHECK(same_colour(got, want));
+}
+
+}  // namespace
+
+GRADED_TEST("local_shading: Lambert's cosine, k_d I straight above and k_d I cos(theta) at a slant", "04.1", 3)
+{
+    const PhongMaterial matte{{0.5f, 0.25f, 1.0f}, color(0.0f), 1.0f};
+    const color light{2.0f, 3.0f, 0.5f};
+    for (const double degrees : {0.0, 30.0, 60.0, -75.0, 89.0})
+        check(matte, up, tilted(-40.0), tilted(degrees), light);
+}
+
+GRADED_TEST("local_shading: the highlight is k_s I where n bisects light and eye, and falls off as (n.h)^p", "04.1", 3)
+{
+    const PhongMaterial shiny{color(0.0f), {0.5f, 0.6f, 0.7f}, 20.0f};
+    const color light(1.5f);
+    // Mirror directions: h = n, so the highlight is k_s I exactly.
+    {
+        const color got = local_shading(shiny, up, tilted(-35.0), tilted(35.0), light);
+        INFO(query(shiny, up, tilted(-35.0), tilted(35.0), light) << ": got " << show(got)
+             << ", expected the full highlight k_s I = " << show(light * shiny.specular));
+        CHECK(glm::length(got - light * shiny.specular) <= 1e-5f);
+    }
+    for (const double eye : {-50.0, -20.0, 10.0, 70.0})
+        check(shiny, up, tilted(eye), tilted(35.0), light);
+    // Diffuse and specular add up.
+    const PhongMaterial plastic{{0.4f, 0.1f, 0.1f}, color(0.5f), 8.0f};
+    check(plastic, glm::normalize(vec3(0.2f, 1.0f, -0.3f)), tilted(-10.0), glm::normalize(vec3(0.5f, 1.0f, 0.5f)), light);
+}
+
+GRADED_TEST("local_shading: a light behind the surface gives nothing, not even a highlight; one above it does", "04.1", 2)
+{
+    const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.8f), 2.0f};
+    const color light(1.0f);
+    // Behind (n.l < 0) with the eye placed so that n.h > 0, and exactly in the plane (n.l = 0).
+    for (const vec3& l : {tilted(100.0), vec3(1, 0, 0)}) {
+        const vec3 v = tilted(-10.0);
+        const color got = local_shading(plastic, up, v, l, light);
+        INFO(query(plastic, up, v, l, light) << ": got " << show(got) << ", expected black: the light is not above the surface");
+        CHECK(got == color(0.0f));
+    }
+    check(plastic, up, tilted(-10.0), tilted(80.0), light);
+}
+
+STABILITY_TEST("local_shading: never a NaN, with the light straight opposite the eye or grazing, p from 0.5 to 1000", "04.1", 1)
+{
+    // l = -v leaves no halfway vector (normalising 0 gives a NaN): the highlight is 0 there.
+    for (const float p : {0.5f, 1.0f, 1000.0f}) {
+        const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.8f), p};
+        for (const vec3& l : {tilted(30.0), tilted(89.9999), glm::normalize(vec3(1.0f, 1e-7f, 0.0f))}) {
+            const vec3 v = -l;
+            const color got = local_shading(plastic, up, v, l, color(1.0f));
+            const color want = reference(plastic, up, v, l, color(1.0f));
+            INFO(query(plastic, up, v, l, color(1.0f)) << ": got " << show(got) << ", expected " << show(want)
+                 << " (the diffuse term alone, finite)");
+            REQUIRE((std::isfinite(got.x) && std::isfinite(got.y) && std::isfinite(got.z)));
+            REQUIRE((same_colour(got, want) && got.x > 0.0f));
+        }
+        check(plastic, up, tilted(-89.999), tilted(89.999), color(1.0f));
+    }
+}

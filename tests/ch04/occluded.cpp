@@ -1,0 +1,135 @@
+// EXERCISE 04.2: the any-hit shadow feeler: anything strictly between the origin and the light?
+#include "02_spheres_triangles/mesh.hpp"
+#include "tests/ch04/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+struct Case {
+    LitScene scene;
+    point3 origin;
+    point3 light;
+    float t_min;
+    bool blocked;
+    const char* why;
+};
+
+void check(const Case& c)
+{
+    const bool got = occluded(c.scene, c.origin, c.light, c.t_min);
+    INFO("the feeler from " << show(c.origin) << " to the light at " << show(c.light) << " with t_min = " << c.t_min
+         << " in " << show(c.scene) << ": got " << show(got) << ", expected " << show(c.blocked) << ": " << c.why);
+    CHECK(got == c.blocked);
+}
+
+const point3 ground{0, 0, 0};
+const point3 overhead{0, 10, 0};
+
+std::uint64_t intersection_tests()
+{
+    return total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+}
+
+}  // namespace
+
+GRADED_TEST("occluded: a sphere or a triangle between the point and the light blocks it; nothing between, it is seen", "04.2", 3)
+{
+    check({scene_of({{{0, 5, 0}, 1}}, {}), ground, overhead, 0.0f, true, "the sphere lies across the feeler"});
+    check({scene_of({}, square_facing_up({0, 5, 0}, 2)), ground, overhead, 0.0f, true, "the square lies across the feeler"});
+    check({scene_of({{{0.5f, 3, -0.5f}, 2}}, square_facing_up({4, 5, 0}, 1)), ground, {4, 8, 1}, 0.0f, true,
+           "the sphere lies across the slanted feeler"});
+    check({scene_of({{{3, 5, 0}, 1}}, square_facing_up({-4, 5, 0}, 2)), ground, overhead, 0.0f, false,
+           "both objects lie beside the feeler"});
+    check({scene_of({}, {}), ground, overhead, 0.0f, false, "there is nothing in the scene"});
+}
+
+GRADED_TEST("occluded: an occluder beyond the light or behind the point does not block it; one just before the light does", "04.2", 3)
+{
+    check({scene_of({{{0, 15, 0}, 1}}, {}), ground, overhead, 0.0f, false, "the sphere lies beyond the light"});
+    check({scene_of({}, square_facing_up({0, 12, 0}, 5)), ground, overhead, 0.0f, false, "the square lies beyond the light"});
+    check({scene_of({{{0, -5, 0}, 1}}, square_facing_up({0, -1, 0}, 5)), ground, overhead, 0.0f, false,
+           "both lie behind the point"});
+    check({scene_of({{{0, 9, 0}, 0.5f}}, {}), ground, overhead, 0.0f, true, "the sphere spans y = 8.5 to 9.5, before the light at 10"});
+    check({scene_of({}, square_facing_up({0, 9.5f, 0}, 5)), ground, overhead, 0.0f, true, "the square at y = 9.5 lies before the light"});
+}
+
+GRADED_TEST("occluded: stops at the first occluder it finds (1 intersection test when all block), tests all when none does", "04.2", 3)
+{
+    // Twenty spheres, and twenty squares, all across the feeler: any one of them answers.
+    std::vector<Sphere> spheres;
+    std::vector<Triangle> triangles;
+    for (int k = 0; k < 20; ++k) {
+        spheres.push_back({{0, 0.4f + 0.45f * static_cast<float>(k), 0}, 0.2f});
+        triangles.push_back({{-3, 0.5f + 0.45f * static_cast<float>(k), 3}, {3, 0.5f + 0.45f * static_cast<float>(k), 3},
+                             {0, 0.5f + 0.45f * static_cast<float>(k), -3}});
+    }
+    for (const LitScene& scene : {scene_of(spheres, {}), scene_of({}, triangles)}) {
+        reset_counters();
+        const bool got = occluded(scene, ground, overhead, 0.0f);
+        const std::uint64_t tests = intersection_tests();
+        INFO("the feeler from " << show(ground) << " to the light at " << show(overhead) << " through " << show(scene)
+             << ", every one of them across it: got " << show(got) << " after " << tests
+             << " intersection tests (counted by hit_sphere and hit_triangle), expected blocked after 1");
+        CHECK(got);
+        CHECK(tests == 1);
+    }
+    // Moved aside, none blocks, and each must be asked.
+    for (Sphere& s : spheres)
+        s.centre.x = 5.0f;
+    reset_counters();
+    const LitScene aside = scene_of(spheres, {});
+    const bool got = occluded(aside, ground, overhead, 0.0f);
+    INFO("the feeler from " << show(ground) << " to " << show(overhead) << " beside 20 spheres: got " << show(got)
+         << " after " << intersection_tests() << " intersection tests, expected not blocked after 20");
+    CHECK_FALSE(got);
+    CHECK(intersection_tests() == 20);
+}
+
+GRADED_TEST("occluded: t_min is honoured, a surface nearer than t_min to the origin does not block", "04.2", 2)
+{
+    const LitScene scene = scene_of({}, square_facing_up({0, 0.001f, 0}, 1));
+    check({scene, ground, overhead, 0.01f, false, "the square is 0.001 away, nearer than t_min = 0.01"});
+    check({scene, ground, overhead, 0.0f, true, "the square is 0.001 away, farther than t_min = 0"});
+    check({scene, ground, overhead, 0.0005f, true, "the square is 0.001 away, farther than t_min = 0.0005"});
+}
+
+STABILITY_TEST("occluded: a surface through the light itself does not block it; the same surface 1% nearer does", "04.2", 2)
+{
+    // A lamp resting on a surface: the feeler stops shadow_epsilon short of the light.
+    check({scene_of({}, square_facing_up(overhead, 3)), ground, overhead, 0.0f, false, "the square passes through the light"});
+    check({scene_of({{{0, 11, 0}, 1}}, {}), ground, overhead, 0.0f, false, "the sphere's surface passes through the light"});
+    check({scene_of({}, square_facing_up({0, 9.9f, 0}, 3)), ground, overhead, 0.0f, true, "the square lies 1% before the light"});
+    check({scene_of({{{0, 10.9f, 0}, 1}}, {}), ground, overhead, 0.0f, true, "the sphere reaches 1% before the light"});
+    // Far from the origin, where float steps are 1/16: the same answers.
+    const point3 far_ground{1e6f, 0, -1e6f}, far_light{1e6f, 1e4f, -1e6f};
+    check({scene_of({{{1e6f, 5e3f, -1e6f}, 100}}, {}), far_ground, far_light, 0.0f, true, "a sphere halfway, 1e6 from the origin"});
+    check({scene_of({}, square_facing_up(far_light, 500)), far_ground, far_light, 0.0f, false,
+           "a square through the light, 1e6 from the origin"});
+    check({scene_of({{{1e6f, 2e4f, -1e6f}, 100}}, {}), far_ground, far_light, 0.0f, false, "a sphere beyond the light, 1e6 from the origin"});
+}
+
+STABILITY_TEST("occluded: a light inside a closed object is hidden from every point outside and seen from inside", "04.2", 2)
+{
+    const point3 light{0.2f, 5.1f, -0.3f};
+    check({scene_of({{{0, 5, 0}, 1}}, {}), ground, light, 0.0f, true, "the light is inside the sphere, the point outside"});
+    check({scene_of({{{0, 5, 0}, 1}}, {}), {0.5f, 4.6f, 0.2f}, light, 0.0f, false, "light and point are both inside the sphere"});
+    // Inside a closed mesh of 320 triangles: from every direction, no feeler slips between them.
+    const IndexedMesh mesh = icosphere({0, 5, 0}, 1.0f, 2);
+    std::vector<Triangle> triangles;
+    for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
+        triangles.push_back(mesh.triangle(f));
+    const LitScene closed = scene_of({}, triangles);
+    int slipped = 0;
+    point3 first{0.0f};
+    for (const point3& corner : mesh.vertices) {  // aimed through the mesh's own vertices, its weakest spots
+        const point3 outside = light + 4.0f * (corner - light);
+        if (!occluded(closed, outside, light, 0.0f) && slipped++ == 0)
+            first = outside;
+    }
+    INFO("the light at " << show(light) << " inside a closed icosphere of 320 triangles (centre (0, 5, 0), radius 1), "
+         "feelers from outside aimed through each of its " << mesh.vertices.size() << " vertices: " << slipped
+         << " were not blocked (the first from " << show(first) << "), expected every one blocked");
+    CHECK(slipped == 0);
+}

@@ -1,0 +1,19 @@
+// The small picture that chapter 04's picture test renders, shared with make_references so that
+// the reference and the test render exactly the same thing.
+#pragma once
+
+#include "04_shadow_feelers/figure.hpp"
+
+namespace rt::pictures {
+
+inline Image ch04()
+{
+    RenderSettings s;
+    s.width = 96;
+    s.height = 54;
+    s.spp = 1;
+    s.show_progress = false;
+    return ch04::render_figure(s);
+}
+
+}  // namespace rt::pictures

@@ -1,0 +1,153 @@
+// EXERCISE 04.4: the colour of a hit: ambient, plus every light its feeler reaches.
+//
+// These cases send their feelers with the given offset along the normal and the given closest-hit
+// query, and compare with your own local_shading: they check how shade puts the pieces together,
+// so a mistake in 04.1, 04.2 or 04.3 costs points there, not here again.
+#include "tests/ch04/describe.hpp"
+
+#include <cmath>
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+const FeelerSettings given_feelers{Offset::normal, ShadowQuery::closest_hit};
+const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.3f), 10.0f};
+
+// A floor of two triangles (y = 0, facing up) in plastic, an ambient light of 0.1, and `lights`.
+LitScene floor_scene(const std::vector<PointLight>& lights, const std::vector<Sphere>& spheres = {})
+{
+    LitScene scene;
+    const int m = scene.add_material(plastic);
+    for (const Sphere& s : spheres)
+        scene.add_sphere(s, m);
+    for (const Triangle& t : square_facing_up({0, 0, 0}, 10))
+        scene.add_triangle(t, m);
+    scene.ambient = color(0.1f);
+    scene.lights = lights;
+    return scene;
+}
+
+// The eye's ray to `target` and its hit, as the figure finds it.
+std::pair<Ray, Hit> look_at(const LitScene& scene, const point3& eye, const point3& target)
+{
+    const Ray ray{eye, glm::normalize(target - eye)};
+    const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
+    REQUIRE(hit);
+    return {ray, *hit};
+}
+
+// What one unblocked light adds at the hit, by your local_shading, with the normal facing the eye.
+color lit_by(const Ray& ray, const Hit& hit, const vec3& n, const PointLight& light)
+{
+    const vec3 to_light = light.position - hit.p;
+    const float d2 = glm::dot(to_light, to_light);
+    return local_shading(plastic, n, -ray.dir, to_light / std::sqrt(d2), light.intensity / d2);
+}
+
+std::string describe(const LitScene& scene, const Ray& ray, const Hit& hit)
+{
+    std::ostringstream s;
+    s << show(ray) << " hits " << show(scene) << " at " << show(hit.p) << " (normal " << show(hit.n) << "), "
+      << show(plastic) << ", ambient light " << show(scene.ambient) << ", lights";
+    for (const PointLight& l : scene.lights)
+        s << " at " << show(l.position) << " of intensity " << show(l.intensity);
+    return s.str();
+}
+
+std::uint64_t shadow_rays()
+{
+    return total_counts()[static_cast<size_t>(Counter::shadow_rays)];
+}
+
+}  // namespace
+
+GRADED_TEST("shade: ambient plus local_shading of a light the feeler reaches, the light divided by d^2", "04.4", 3)
+{
+    for (const PointLight& light : {PointLight{{1, 4, 2}, color(16.0f)}, PointLight{{-3, 1, -1}, {5.0f, 4.0f, 3.0f}},
+                                    PointLight{{0.4f, 0.5f, 0.3f}, color(0.2f)}}) {
+        const LitScene scene = floor_scene({light});
+        const auto [ray, hit] = look_at(scene, {0, 2, 5}, {0.5f, 0, 0.3f});
+        const color got = shade(scene, ray, hit, given_feelers);
+        const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, light);
+        INFO(describe(scene, ray, hit) << ": got " << show(got) << ", expected k_d ambient + local_shading(k_d, n, v, l, "
+             "intensity / d^2) = " << show(want));
+        CHECK(same_colour(got, want));
+    }
+}
+
+GRADED_TEST("shade: a light whose feeler is blocked leaves only the ambient term; unblocked, it lights", "04.4", 2)
+{
+    const PointLight light{{0, 6, 0}, color(30.0f)};
+    const LitScene scene = floor_scene({light}, {{{0, 3, 0}, 1}});  // a sphere over the floor's centre
+    const point3 eye{0, 2, 8};
+    {
+        const auto [ray, hit] = look_at(scene, eye, {0.1f, 0, 0.2f});  // in the sphere's shadow
+        const color got = shade(scene, ray, hit, given_feelers);
+        const color want = plastic.diffuse * scene.ambient;
+        INFO(describe(scene, ray, hit) << ": got " << show(got) << ", expected the ambient term alone " << show(want)
+             << ": the sphere lies between the point and the light");
+        CHECK(same_colour(got, want));
+    }
+    const auto [ray, hit] = look_at(scene, eye, {3.0f, 0, 1.0f});  // beside the shadow
+    const color got = shade(scene, ray, hit, given_feelers);
+    const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, light);
+    INFO(describe(scene, ray, hit) << ": got " << show(got) << ", expected " << show(want) << ": nothing lies between");
+    CHECK(same_colour(got, want));
+}
+
+GRADED_TEST("shade: two lights add up, a light below the floor adds nothing, and only the lights above get a feeler", "04.4", 2)
+{
+    const PointLight a{{2, 3, 1}, color(9.0f)}, b{{-2, 5, -1}, {4.0f, 8.0f, 12.0f}}, below{{0, -2, 0}, color(50.0f)};
+    const LitScene scene = floor_scene({a, below, b});
+    const auto [ray, hit] = look_at(scene, {0, 2, 5}, {0.3f, 0, -0.2f});
+    reset_counters();
+    const color got = shade(scene, ray, hit, given_feelers);
+    const std::uint64_t feelers = shadow_rays();
+    const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, a) + lit_by(ray, hit, {0, 1, 0}, b);
+    INFO(describe(scene, ray, hit) << ": got " << show(got) << " after " << feelers << " shadow feelers, expected "
+         << show(want) << " after 2 (one per light above the floor)");
+    CHECK(same_colour(got, want));
+    CHECK(feelers == 2);
+}
+
+GRADED_TEST("shade: a triangle seen from its back is shaded with its normal turned toward the eye", "04.4", 2)
+{
+    // One triangle wound clockwise seen from above: its normal points down, the eye and light are above.
+    LitScene scene;
+    const int m = scene.add_material(plastic);
+    scene.add_triangle({{-5, 0, -5}, {5, 0, -5}, {0, 0, 5}}, m);
+    scene.ambient = color(0.1f);
+    const PointLight light{{1, 4, 2}, color(16.0f)};
+    scene.lights = {light};
+    {
+        const auto [ray, hit] = look_at(scene, {0, 2, 5}, {0.5f, 0, 0.3f});
+        REQUIRE(hit.n.y < 0.0f);
+        const color got = shade(scene, ray, hit, given_feelers);
+        const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, light);
+        INFO(describe(scene, ray, hit) << ": got " << show(got) << ", expected " << show(want)
+             << ": eye and light are on the same side, so the light falls on the side the eye sees");
+        CHECK(same_colour(got, want));
+    }
+    // From below, the same light lies behind the surface the eye sees.
+    const auto [below_ray, below_hit] = look_at(scene, {0, -2, 5}, {0.5f, 0, 0.3f});
+    const color dark = shade(scene, below_ray, below_hit, given_feelers);
+    INFO(describe(scene, below_ray, below_hit) << ": got " << show(dark) << ", expected the ambient term alone "
+         << show(plastic.diffuse * scene.ambient) << ": the light is on the other side");
+    CHECK(same_colour(dark, plastic.diffuse * scene.ambient));
+}
+
+STABILITY_TEST("shade: never a NaN, with a light exactly at the shaded point or in the surface's plane", "04.4", 1)
+{
+    const PointLight in_plane{{4, 0, -3}, color(1.0f)}, above{{0, 3, 0}, color(2.0f)};
+    LitScene scene = floor_scene({in_plane, above});
+    const auto [ray, hit] = look_at(scene, {0, 2, 5}, {0.5f, 0, 0.3f});
+    scene.lights.push_back({hit.p, color(1.0f)});  // exactly at the point: d = 0
+    const color got = shade(scene, ray, hit, given_feelers);
+    const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, above);
+    INFO(describe(scene, ray, hit) << ": got " << show(got) << ", expected " << show(want)
+         << ": the light in the floor's plane and the one at the point itself add nothing");
+    REQUIRE((std::isfinite(got.x) && std::isfinite(got.y) && std::isfinite(got.z)));
+    CHECK(same_colour(got, want));
+}
