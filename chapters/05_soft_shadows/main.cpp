@@ -1,0 +1,170 @@
+// Chapter 05's program: renders the figure (the slides' pair: a hard shadow from a point light
+// beside a soft shadow from area lights) with the light sampling of your choice and, with --sweep,
+// measures what samples per light cost and buy, random against stratified.
+#include "03_reflection_refraction/rounds.hpp"
+#include "05_soft_shadows/figure.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/trade.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    int light_samples = 16;
+    std::string sampling = "stratified";
+    bool sweep = false;
+    int sweep_width = 160;
+    int sweep_height = 120;
+    int reference_samples = 4096;
+    int repeat = 5;
+    std::string csv = "05_soft_shadows.csv";
+};
+
+SampleScheme scheme_named(const std::string& name)
+{
+    if (name == "random")
+        return SampleScheme::random;
+    if (name == "stratified")
+        return SampleScheme::stratified;
+    throw InputError("--sampling takes random or stratified, got '" + name + "'");
+}
+
+LightSampling sampling_of(const Options& o)
+{
+    const LightSampling sampling{o.light_samples, scheme_named(o.sampling)};
+    if (sampling.scheme == SampleScheme::stratified && grid_side(sampling.samples) == 0)
+        throw InputError("--light-samples must be a square (1, 4, 9, 16, ...) for stratified sampling, got " +
+                         std::to_string(o.light_samples) + " (or use --sampling random)");
+    return sampling;
+}
+
+// Samples per light against time and error, random against stratified, on the soft panel alone
+// at one sample per pixel (the pixel's centre), so that all the noise is the light sampling's.
+// The reference is the same panel with reference_samples stratified samples per light, from
+// another seed, so that its noise is unrelated to any row's. Times are taken in rounds (chapter
+// 03's median_seconds_in_rounds), so that a load that comes and goes falls on all rows alike.
+void sweep(const Options& o)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.width = o.sweep_width;
+    settings.height = o.sweep_height;
+    settings.spp = 1;
+    settings.show_progress = false;
+    const AreaLitScene scene = ch05::soft_scene();
+
+    std::cerr << "rendering the reference, " << o.reference_samples << " stratified samples per light...\n";
+    RenderSettings reference_settings = settings;
+    reference_settings.seed = settings.seed + 1000003;
+    reference_settings.show_progress = true;
+    const Image reference =
+        ch05::render_panel(reference_settings, scene, {o.reference_samples, SampleScheme::stratified});
+
+    struct Trial {
+        LightSampling sampling;
+        std::string name;
+    };
+    std::vector<Trial> trials;
+    for (const auto& [scheme, name] : {std::pair<SampleScheme, std::string>{SampleScheme::random, "random"},
+                                       {SampleScheme::stratified, "stratified"}})
+        for (const int n : {1, 4, 16, 64, 256})
+            trials.push_back({{n, scheme}, name});
+
+    std::vector<Image> images;
+    std::vector<std::uint64_t> rays;
+    for (const Trial& t : trials) {
+        reset_counters();
+        images.push_back(ch05::render_panel(settings, scene, t.sampling));
+        rays.push_back(total_rays(total_counts()));
+    }
+    std::cerr << "timing " << trials.size() << " rows, " << o.repeat << " rounds...\n";
+    std::vector<std::function<void()>> renders;
+    for (const Trial& t : trials)
+        renders.push_back([&settings, &scene, sampling = t.sampling] { ch05::render_panel(settings, scene, sampling); });
+    const std::vector<double> times = median_seconds_in_rounds(o.repeat, renders);
+
+    TradeTable table{"05_soft_shadows",
+                     "rmse_linear_rgb_vs_" + std::to_string(o.reference_samples) + "_stratified_samples_per_light", {}};
+    std::cout << "the soft panel at " << settings.width << "x" << settings.height
+              << ", 1 sample per pixel (its centre), 2 area lights; median of " << o.repeat
+              << " interleaved runs; RMSE in linear RGB against " << o.reference_samples
+              << " stratified samples per light\n\n"
+              << "| scheme | samples per light | seconds | rays | rays/second | RMSE | RMSE x sqrt(N) | order since N/4 |\n"
+              << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (size_t k = 0; k < trials.size(); ++k) {
+        const Trial& t = trials[k];
+        const double seconds = times[k];
+        const double error = rmse(images[k], reference);
+        const double n = static_cast<double>(t.sampling.samples);
+        std::cout << "| " << t.name << " | " << t.sampling.samples << " | " << std::fixed << std::setprecision(4)
+                  << seconds << " | " << rays[k] << " | " << std::setprecision(0)
+                  << static_cast<double>(rays[k]) / seconds << " | " << std::scientific << std::setprecision(2)
+                  << error << " | " << error * std::sqrt(n) << " | ";
+        // The measured order p in error ~ N^-p, from this row and the one with a quarter the samples.
+        if (t.sampling.samples > 1)
+            std::cout << std::fixed << std::setprecision(2)
+                      << std::log(rmse(images[k - 1], reference) / error) / std::log(4.0);
+        std::cout << std::defaultfloat << " |\n";
+        table.rows.push_back({"scheme:samples_per_light", t.name + ":" + std::to_string(t.sampling.samples), seconds,
+                              rays[k], error});
+    }
+    // Random rows from most samples to fewest, then stratified from fewest to most: the plot's
+    // line (common/trade_plot.gnuplot joins the rows in order) runs down one scheme and up the
+    // other, through the 1-sample point they share, instead of jumping back across the plot.
+    std::reverse(table.rows.begin(), table.rows.begin() + static_cast<long>(trials.size() / 2));
+    std::cout << '\n';
+    print_trade_table(std::cout, table);
+    write_trade_csv(o.csv, table);
+    std::cout << "wrote " << o.csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("05_soft_shadows", [&] {
+        Options o;
+        o.common.out = "05_soft_shadows.png";
+        // Two panels of 400 x 320 side by side.
+        o.common.width = 800;
+        o.common.height = 320;
+        CommandLine cli("05_soft_shadows",
+                        "Soft shadows: area lights sampled with many shadow feelers, beside the hard shadow of a point.");
+        add_common_options(cli, o.common);
+        cli.option("--light-samples", o.light_samples, "points (shadow feelers) per area light per shading point", 1,
+                   65536);
+        cli.option("--sampling", o.sampling, "how the points are picked: random or stratified (a square number)");
+        cli.flag("--sweep", o.sweep, "measure samples per light (1 to 256), random against stratified, against error");
+        cli.option("--sweep-width", o.sweep_width, "the sweep's image width (the soft panel alone)", 1, 16384);
+        cli.option("--sweep-height", o.sweep_height, "the sweep's image height", 1, 16384);
+        cli.option("--reference-samples", o.reference_samples,
+                   "stratified samples per light of the sweep's reference (a square)", 1, 1048576);
+        cli.option("--repeat", o.repeat, "renders per sweep row; the table gives the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        const LightSampling sampling = sampling_of(o);
+        if (o.sweep) {
+            if (grid_side(o.reference_samples) == 0)
+                throw InputError("--reference-samples must be a square (1, 4, 9, 16, ...), got " +
+                                 std::to_string(o.reference_samples));
+            sweep(o);
+            return 0;
+        }
+        const Timer timer;
+        const Image image = ch05::render_figure(render_settings(o.common), sampling);
+        const double seconds = timer.seconds();
+        write_png(o.common.out, image);
+        if (o.common.stats)
+            print_stats(std::cout, total_counts(), seconds);
+        return 0;
+    });
+}

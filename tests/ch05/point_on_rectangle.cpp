@@ -1,0 +1,82 @@
+// EXERCISE 05.1: a point of the unit square to a point of a rectangle light.
+#include "tests/ch05/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+// A tilted rectangle, 3 by 1, away from the origin, and an axis-aligned one.
+const AreaLight tilted = rectangle_light({2.0f, 5.0f, -1.0f}, {1.2f, 0.0f, 0.9f}, {0.0f, 0.5f, 0.0f}, color(1.0f));
+const AreaLight ceiling = rectangle_light({0.0f, 3.0f, 0.0f}, {0.5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.25f}, color(1.0f));
+
+// Points equal within float rounding of coordinates of size `scale`.
+bool same_point(const point3& got, const point3& want, float scale)
+{
+    return glm::length(got - want) <= 1e-6f * scale;
+}
+
+void check(const AreaLight& light, sample2 u, const point3& want, const char* what)
+{
+    const point3 got = point_on_rectangle(light, u);
+    INFO(show(light) << ", " << show(u) << ": got " << show(got) << ", expected " << what << " " << show(want)
+         << " = centre + (2 u.x - 1) axis_u + (2 u.y - 1) axis_v");
+    CHECK(same_point(got, want, 10.0f));
+}
+
+}  // namespace
+
+GRADED_TEST("point_on_rectangle: (0, 0) is the corner centre - axis_u - axis_v, (1/2, 1/2) the centre, u.x runs along axis_u", "05.1", 2)
+{
+    for (const AreaLight& light : {tilted, ceiling}) {
+        const point3 c = light.centre;
+        const vec3 a = light.axis_u, b = light.axis_v;
+        check(light, {0.0f, 0.0f}, c - a - b, "the corner");
+        check(light, {0.5f, 0.5f}, c, "the centre");
+        check(light, {1.0f, 0.0f}, c + a - b, "the corner along axis_u");
+        check(light, {0.0f, 1.0f}, c - a + b, "the corner along axis_v");
+        check(light, {0.75f, 0.25f}, c + 0.5f * a - 0.5f * b, "halfway from the centre to the edges");
+    }
+}
+
+GRADED_TEST("point_on_rectangle: any u lands at (2 u.x - 1, 2 u.y - 1) in half-axes, on the light; midpoints go to midpoints", "05.1", 2)
+{
+    // An affine map: equal areas of the square go to equal areas of the rectangle.
+    Rng rng(51, 0);
+    for (int k = 0; k < 1000; ++k) {
+        const sample2 u{rng.next_float(), rng.next_float()}, w{rng.next_float(), rng.next_float()};
+        const point3 got = point_on_rectangle(tilted, u);
+        const OnLight on = on_light(tilted, got);
+        INFO(show(tilted) << ", " << show(u) << ": got " << show(got) << ", at (" << on.x << ", " << on.y
+             << ") in half-axes and " << on.off_plane << " off the light's plane; expected (" << 2 * u.x - 1 << ", "
+             << 2 * u.y - 1 << ") and 0");
+        REQUIRE(std::abs(on.x - (2.0 * u.x - 1.0)) <= 1e-5);
+        REQUIRE(std::abs(on.y - (2.0 * u.y - 1.0)) <= 1e-5);
+        REQUIRE(std::abs(on.off_plane) <= 1e-5);
+        const point3 mid = point_on_rectangle(tilted, 0.5f * (u + w));
+        const point3 want = 0.5f * (got + point_on_rectangle(tilted, w));
+        INFO("the point of the midpoint of " << show(u) << " and " << show(w) << " is " << show(mid)
+             << ", expected the midpoint of their points, " << show(want));
+        REQUIRE(same_point(mid, want, 10.0f));
+    }
+}
+
+STABILITY_TEST("point_on_rectangle: lights 1e-4 and 1e5 across keep every point on them, within float rounding", "05.1", 1)
+{
+    Rng rng(52, 0);
+    for (const float size : {1e-4f, 1e5f}) {
+        const AreaLight light =
+            rectangle_light(size * point3(0.3f, 2.0f, -0.7f), size * vec3(0.6f, 0.0f, 0.8f), size * vec3(0.0f, 0.25f, 0.0f), color(1.0f));
+        for (int k = 0; k < 1000; ++k) {
+            const sample2 u = k == 0 ? sample2(one_minus_epsilon) : sample2(rng.next_float(), rng.next_float());
+            const point3 got = point_on_rectangle(light, u);
+            const OnLight on = on_light(light, got);
+            INFO(show(light) << ", " << show(u) << ": got " << show(got) << ", at (" << on.x << ", " << on.y
+                 << ") in half-axes and " << on.off_plane << " off the plane; expected (" << 2 * u.x - 1 << ", "
+                 << 2 * u.y - 1 << ") and 0");
+            REQUIRE(std::abs(on.x - (2.0 * u.x - 1.0)) <= 1e-5);
+            REQUIRE(std::abs(on.y - (2.0 * u.y - 1.0)) <= 1e-5);
+            REQUIRE(std::abs(on.off_plane) <= 1e-5 * size);
+        }
+    }
+}
