@@ -4,6 +4,10 @@
 #include "common/png.hpp"
 #include "tests/ch01/picture.hpp"
 #include "tests/ch02/picture.hpp"
+#include "tests/ch03/picture.hpp"
+#include "tests/ch04/picture.hpp"
+#include "tests/ch05/picture.hpp"
+#include "tests/ch06/picture.hpp"
 
 #include <functional>
 #include <iostream>
@@ -16,6 +20,10 @@ int main()
     const std::vector<std::pair<std::string, std::function<rt::Image()>>> pictures = {
         {"01_ray_casting", rt::pictures::ch01},
         {"02_spheres_triangles", rt::pictures::ch02},
+        {"03_reflection_refraction", rt::pictures::ch03},
+        {"04_shadow_feelers", rt::pictures::ch04},
+        {"05_soft_shadows", [] { return rt::pictures::ch05(rt::pictures::ch05_reference_spp); }},
+        {"06_depth_of_field", rt::pictures::ch06},
     };
     for (const auto& [name, render] : pictures) {
         const std::string path = std::string(RT_REFERENCES_DIR) + "/" + name + ".png";

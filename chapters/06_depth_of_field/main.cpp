@@ -1,0 +1,131 @@
+// Chapter 06's program: renders the figure (a row of spheres, the middle one in focus) through a
+// thin lens of any aperture and focus distance and, with --sweep, measures what lens samples per
+// pixel cost and buy.
+#include "06_depth_of_field/figure.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/trade.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <limits>
+#include <vector>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    float aperture = ch06::figure_aperture_radius;
+    float focus = ch06::figure_lens().focus_distance;
+    bool sweep = false;
+    int reference_spp = 1024;
+    int repeat = 3;
+    std::string csv = "06_depth_of_field.csv";
+};
+
+ThinLens lens_of(const Options& o)
+{
+    const ThinLens lens{o.aperture, o.focus};
+    check_thin_lens(lens, "--aperture", "--focus");
+    return lens;
+}
+
+Image render_with(const Options& o, int spp, std::uint64_t seed)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.spp = spp;
+    settings.seed = seed;
+    return ch06::render_figure(settings, lens_of(o));
+}
+
+// The middle of `seconds` (the mean of the two middle ones for an even count).
+double median(std::vector<double> seconds)
+{
+    std::sort(seconds.begin(), seconds.end());
+    const size_t n = seconds.size();
+    return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+}
+
+// Lens samples per pixel against time and error: RMSE in linear RGB against a many-sample render.
+// Each sample of a pixel is one camera ray from its own lens point (and its own point of the
+// pixel), so lens samples per pixel are the render's samples per pixel. The reference has a seed of
+// its own: with the same seed an N-sample render would be the first N samples of the reference's
+// own pixels, and its error would look smaller than it is, the more so the larger N. The repeats are
+// interleaved (every row once, then every row again), so that a machine whose load changes
+// during the sweep slows every row alike, and each row reports its median.
+void sweep(const Options& o)
+{
+    std::cerr << "rendering the reference at " << o.reference_spp << " spp...\n";
+    const Image reference = render_with(o, o.reference_spp, o.common.seed + 1);
+    const std::vector<int> counts = {1, 4, 16, 64, 256};
+    std::vector<std::uint64_t> rays(counts.size());
+    std::vector<Image> images(counts.size());
+    std::vector<std::vector<double>> seconds(counts.size());
+    for (size_t k = 0; k < counts.size(); ++k) {
+        reset_counters();
+        images[k] = render_with(o, counts[k], o.common.seed);
+        rays[k] = total_rays(total_counts());
+    }
+    for (int run = 0; run < o.repeat; ++run)
+        for (size_t k = 0; k < counts.size(); ++k) {
+            const Timer timer;
+            render_with(o, counts[k], o.common.seed);
+            seconds[k].push_back(timer.seconds());
+        }
+    TradeTable table{"06_depth_of_field", "rmse_linear_rgb_vs_" + std::to_string(o.reference_spp) + "spp", {}};
+    for (size_t k = 0; k < counts.size(); ++k)
+        table.rows.push_back({"lens_samples", std::to_string(counts[k]), median(seconds[k]), rays[k],
+                              rmse(images[k], reference)});
+    print_trade_table(std::cout, table);
+    write_trade_csv(o.csv, table);
+    std::cout << "wrote " << o.csv << '\n';
+}
+
+// How far each sphere lies and how widely the lens blurs it: what the figure should show.
+void print_circles_of_confusion(std::ostream& out, const Options& o)
+{
+    const Camera cam = make_camera(ch06::figure_camera(o.common.width, o.common.height));
+    const ThinLens lens = lens_of(o);
+    for (size_t k = 0; k < ch06::sphere_centres.size(); ++k) {
+        const float depth = ch06::depth_of(cam, ch06::sphere_centres[k]);
+        out << "sphere" << k + 1 << "_depth=" << depth << "\nsphere" << k + 1
+            << "_circle_of_confusion_pixels=" << circle_of_confusion_pixels(cam, lens, depth) << '\n';
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("06_depth_of_field", [&] {
+        Options o;
+        o.common.out = "06_depth_of_field.png";
+        CommandLine cli("06_depth_of_field", "Depth of field: a thin lens, one plane in sharp focus, the rest blurred.");
+        add_common_options(cli, o.common);
+        const float most = std::numeric_limits<float>::max();
+        cli.option("--aperture", o.aperture, "the lens's radius in scene units (0: a pinhole, all sharp)", -most, most);
+        cli.option("--focus", o.focus, "the distance of the plane of sharp focus in front of the eye", -most, most);
+        cli.flag("--sweep", o.sweep, "measure lens samples per pixel (1, 4, 16, 64, 256) against time and error");
+        cli.option("--reference-spp", o.reference_spp, "samples per pixel of the sweep's reference", 1, 65536);
+        cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        lens_of(o);  // a bad lens is bad input, before any work
+        if (o.sweep) {
+            sweep(o);
+            return 0;
+        }
+        const Timer timer;
+        const Image image = render_with(o, o.common.spp, o.common.seed);
+        const double seconds = timer.seconds();
+        write_png(o.common.out, image);
+        if (o.common.stats) {
+            print_stats(std::cout, total_counts(), seconds);
+            print_circles_of_confusion(std::cout, o);
+        }
+        return 0;
+    });
+}

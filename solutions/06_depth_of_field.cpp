@@ -1,0 +1,93 @@
+// SOLUTION BEGIN
+// Chapter 06, depth of field: the reference solution.
+//
+// This file is also the source of exercises/06_depth_of_field.cpp: the kit's cutter drops every
+// block between SOLUTION BEGIN and SOLUTION END and keeps the STUB lines as code
+// (`cmake --build <build> --target cut_exercises`; a test checks that the two agree).
+// SOLUTION END
+// STUB // Chapter 06, depth of field: your exercises.
+// STUB //
+// STUB // Each function below says what to compute and gives a hint; its contract is documented in
+// STUB // chapters/06_depth_of_field/06_depth_of_field.hpp and the lesson in that folder's README.md.
+// STUB // Each stub compiles and returns a harmless value, so the chapter's program always runs.
+// STUB // Check your work with:  cmake --build --preset grade --target check_06
+// STUB //
+// STUB // This chapter builds on chapter 01 (primary_ray, the pinhole ray, which 06.3 calls); its
+// STUB // program and figure also use chapter 02's spheres and triangles and chapter 04's shading.
+#include "06_depth_of_field/06_depth_of_field.hpp"
+#include "01_ray_casting/01_ray_casting.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+// pi / 4: the angle each eighth of a square ring (half of one side) spans on its circle.
+constexpr float quarter_pi = 0.785398163397448309616f;
+
+point2 concentric_disc(point2 square)
+{
+    // EXERCISE 06.1: Shirley and Chiu's concentric map, unit square -> unit disc.
+    // 1. Stretch [0, 1]^2 onto [-1, 1]^2: a = 2 square.x - 1, b = 2 square.y - 1.
+    // 2. The centre (a = b = 0) has no angle: return (0, 0) before dividing by a or b.
+    // 3. When |a| >= |b| (the left and right wedges): r = a, phi = (pi / 4) (b / a);
+    //    otherwise (top and bottom): r = b, phi = pi / 2 - (pi / 4) (a / b).
+    //    r keeps its sign, which puts the point in the opposite wedge when it is negative.
+    // 4. Return (r cos phi, r sin phi).
+    // Hint: quarter_pi is pi / 4; std::abs, std::cos and std::sin work on floats.
+    // SOLUTION BEGIN
+    const float a = 2.0f * square.x - 1.0f;
+    const float b = 2.0f * square.y - 1.0f;
+    if (a == 0.0f && b == 0.0f)
+        return point2(0.0f);
+    float r, phi;
+    if (std::abs(a) >= std::abs(b)) {
+        r = a;
+        phi = quarter_pi * (b / a);
+    } else {
+        r = b;
+        phi = 2.0f * quarter_pi - quarter_pi * (a / b);
+    }
+    return r * point2(std::cos(phi), std::sin(phi));
+    // SOLUTION END
+    // STUB return point2(0.0f);
+}
+
+point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
+{
+    // EXERCISE 06.2: where the pinhole ray meets the plane of sharp focus.
+    // The plane lies F = lens.focus_distance in front of the eye, along -w. A unit step along the
+    // ray advances dir.(-w) toward it (the cosine of the ray's angle to the view direction), so the
+    // ray reaches it at t = F / (dir.(-w)), not at t = F.
+    // Hint: pinhole.at(t) is the point.
+    // SOLUTION BEGIN
+    const float advance = glm::dot(pinhole.dir, -cam.w);
+    return pinhole.at(lens.focus_distance / advance);
+    // SOLUTION END
+    // STUB return pinhole.origin;
+}
+
+Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng& rng)
+{
+    // EXERCISE 06.3: the thin-lens ray through pixel position (x, y).
+    // 1. The pinhole ray: primary_ray(cam, x, y). With lens.aperture_radius == 0, return it as it
+    //    is, drawing nothing from rng (the lens formula below would round it differently).
+    // 2. The lens sample: s.x = rng.next_float(), then s.y = rng.next_float(), in that order, and
+    //    d = concentric_disc(s).
+    // 3. The lens point: cam.eye + R (d.x cam.u + d.y cam.v), R = lens.aperture_radius: the lens
+    //    lies in the camera's own u, v plane, whatever way the camera looks.
+    // 4. The ray from the lens point toward focal_point(cam, lens, pinhole), direction made unit.
+    // SOLUTION BEGIN
+    const Ray pinhole = primary_ray(cam, x, y);
+    if (lens.aperture_radius == 0.0f)
+        return pinhole;
+    point2 s;
+    s.x = rng.next_float();
+    s.y = rng.next_float();
+    const point2 d = concentric_disc(s);
+    const point3 on_lens = cam.eye + lens.aperture_radius * (d.x * cam.u + d.y * cam.v);
+    return Ray{on_lens, glm::normalize(focal_point(cam, lens, pinhole) - on_lens)};
+    // SOLUTION END
+    // STUB return Ray{cam.eye, -cam.w};
+}
+
+}  // namespace rt
