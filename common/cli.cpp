@@ -1,5 +1,8 @@
 #include "common/cli.hpp"
 
+#include "common/png.hpp"
+#include "common/stats.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -131,6 +134,17 @@ RenderSettings render_settings(const CommonOptions& o)
     s.threads = o.threads;
     s.seed = o.seed;
     return s;
+}
+
+int write_figure(const CommonOptions& options, const std::function<Image()>& render)
+{
+    const Timer timer;
+    const Image image = render();
+    const double seconds = timer.seconds();
+    write_png(options.out, image);
+    if (options.stats)
+        print_stats(std::cout, total_counts(), seconds);
+    return 0;
 }
 
 int run_program(const std::string& program, const std::function<int()>& body)

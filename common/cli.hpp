@@ -56,6 +56,10 @@ void add_common_options(CommandLine& cli, CommonOptions& options);
 // The render the common options ask for (size, samples, threads, seed).
 RenderSettings render_settings(const CommonOptions& options);
 
+// What every chapter program does without --sweep: renders its figure (timed), writes it to
+// options.out, and prints the --stats lines when asked. Returns the exit status, 0.
+int write_figure(const CommonOptions& options, const std::function<Image()>& render);
+
 // Runs a program's body, turning InputError into "program: message" on stderr and exit status 2.
 int run_program(const std::string& program, const std::function<int()>& body);
 

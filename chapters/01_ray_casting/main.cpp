@@ -66,12 +66,6 @@ int main(int argc, char** argv)
             sweep(o);
             return 0;
         }
-        const Timer timer;
-        const Image image = render_with(o, o.common.spp);
-        const double seconds = timer.seconds();
-        write_png(o.common.out, image);
-        if (o.common.stats)
-            print_stats(std::cout, total_counts(), seconds);
-        return 0;
+        return write_figure(o.common, [&] { return render_with(o, o.common.spp); });
     });
 }

@@ -224,12 +224,6 @@ int main(int argc, char** argv)
             sweep(o);
             return 0;
         }
-        const Timer timer;
-        const Image image = ch02::render_figure(render_settings(o.common), tests);
-        const double seconds = timer.seconds();
-        write_png(o.common.out, image);
-        if (o.common.stats)
-            print_stats(std::cout, total_counts(), seconds);
-        return 0;
+        return write_figure(o.common, [&] { return ch02::render_figure(render_settings(o.common), tests); });
     });
 }

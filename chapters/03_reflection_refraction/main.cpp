@@ -173,12 +173,6 @@ int main(int argc, char** argv)
             std::cout << "\nwrote " << o.csv << " and its _weight, _settings and _schlick siblings\n";
             return 0;
         }
-        const Timer timer;
-        const Image image = ch03::render_figure(render_settings(o.common), o.trace);
-        const double seconds = timer.seconds();
-        write_png(o.common.out, image);
-        if (o.common.stats)
-            print_stats(std::cout, total_counts(), seconds);
-        return 0;
+        return write_figure(o.common, [&] { return ch03::render_figure(render_settings(o.common), o.trace); });
     });
 }

@@ -159,12 +159,6 @@ int main(int argc, char** argv)
             sweep(o);
             return 0;
         }
-        const Timer timer;
-        const Image image = ch05::render_figure(render_settings(o.common), sampling);
-        const double seconds = timer.seconds();
-        write_png(o.common.out, image);
-        if (o.common.stats)
-            print_stats(std::cout, total_counts(), seconds);
-        return 0;
+        return write_figure(o.common, [&] { return ch05::render_figure(render_settings(o.common), sampling); });
     });
 }

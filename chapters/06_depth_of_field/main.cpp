@@ -118,14 +118,9 @@ int main(int argc, char** argv)
             sweep(o);
             return 0;
         }
-        const Timer timer;
-        const Image image = render_with(o, o.common.spp, o.common.seed);
-        const double seconds = timer.seconds();
-        write_png(o.common.out, image);
-        if (o.common.stats) {
-            print_stats(std::cout, total_counts(), seconds);
+        write_figure(o.common, [&] { return render_with(o, o.common.spp, o.common.seed); });
+        if (o.common.stats)
             print_circles_of_confusion(std::cout, o);
-        }
         return 0;
     });
 }
