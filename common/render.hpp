@@ -29,6 +29,17 @@ struct RenderSettings {
     bool show_progress = true;
 };
 
+// A small render with no progress line, as the picture tests and their references make.
+inline RenderSettings quiet_render(int width, int height, int spp = 1)
+{
+    RenderSettings s;
+    s.width = width;
+    s.height = height;
+    s.spp = spp;
+    s.show_progress = false;
+    return s;
+}
+
 // Where sample s of pixel (i, j) lands, in the pixel coordinates of the slides' window transform:
 // pixel centres at whole numbers, pixel (i, j) covering [i - 0.5, i + 0.5] x [j - 0.5, j + 0.5].
 struct PixelSample {

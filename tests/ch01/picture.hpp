@@ -8,11 +8,7 @@ namespace rt::pictures {
 
 inline Image ch01()
 {
-    RenderSettings s;
-    s.width = 96;
-    s.height = 54;
-    s.spp = 1;
-    s.show_progress = false;
+    const RenderSettings s = quiet_render(96, 54, 1);
     return ch01::render_figure(s);
 }
 

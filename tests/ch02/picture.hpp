@@ -8,11 +8,7 @@ namespace rt::pictures {
 
 inline Image ch02()
 {
-    RenderSettings s;
-    s.width = 96;
-    s.height = 54;
-    s.spp = 1;
-    s.show_progress = false;
+    const RenderSettings s = quiet_render(96, 54, 1);
     return ch02::render_figure(s);
 }
 

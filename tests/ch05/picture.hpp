@@ -20,11 +20,7 @@ constexpr int ch05_reference_spp = 1024;
 
 inline Image ch05(int spp, Image* variance_of_mean = nullptr)
 {
-    RenderSettings s;
-    s.width = ch05_width;
-    s.height = ch05_height;
-    s.spp = spp;
-    s.show_progress = false;
+    const RenderSettings s = quiet_render(ch05_width, ch05_height, spp);
     return ch05::render_figure(s, ch05_sampling, variance_of_mean);
 }
 

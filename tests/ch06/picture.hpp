@@ -14,12 +14,8 @@ constexpr int ch06_reference_spp = 1024;          // converged: its noise is 1/8
 // The figure at `spp` samples per pixel with the given seed, and its per-pixel variance of the mean.
 inline Image ch06_render(int spp, std::uint64_t seed, Image* variance_of_mean)
 {
-    RenderSettings s;
-    s.width = ch06_width;
-    s.height = ch06_height;
-    s.spp = spp;
+    RenderSettings s = quiet_render(ch06_width, ch06_height, spp);
     s.seed = seed;
-    s.show_progress = false;
     return ch06::render_figure(s, ch06::figure_lens(), variance_of_mean);
 }
 
