@@ -73,17 +73,22 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   set(csv "${RT_TRADE_DIR}/${chapter}.csv")
   set(plot_command "")
   set(outputs "${csv}")
+  # A chapter whose table is not a cost-error curve draws it with its own script.
+  set(plot_script "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot")
+  if(EXISTS "${CMAKE_SOURCE_DIR}/chapters/${chapter}/trade_plot.gnuplot")
+    set(plot_script "${CMAKE_SOURCE_DIR}/chapters/${chapter}/trade_plot.gnuplot")
+  endif()
   if(GNUPLOT)
     set(png "${RT_TRADE_DIR}/${chapter}.png")
     set(plot_command COMMAND "${GNUPLOT}" -e "csv='${csv}'" -e "png='${png}'" -e "title='${chapter}'"
-      "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot")
+      "${plot_script}")
     list(APPEND outputs "${png}")
   endif()
   add_custom_command(OUTPUT ${outputs}
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${RT_TRADE_DIR}"
     COMMAND ${chapter} --sweep --csv "${csv}"
     ${plot_command}
-    DEPENDS ${chapter} "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot"
+    DEPENDS ${chapter} "${plot_script}"
     COMMENT "Measuring ${chapter}'s trade into ${csv}"
     USES_TERMINAL
     VERBATIM)
