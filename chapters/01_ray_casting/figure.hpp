@@ -14,14 +14,9 @@ constexpr float figure_vfov_degrees = 50.0f;
 
 inline CameraSpec figure_camera(int width, int height, float vfov_degrees = figure_vfov_degrees)
 {
-    CameraSpec spec;
-    spec.from = {0.0f, 1.3f, 4.0f};
-    spec.at = {0.0f, 1.0f, 0.0f};
-    spec.up = {0.0f, 1.0f, 0.0f};
-    spec.vfov_degrees = vfov_degrees;
-    spec.width = width;
-    spec.height = height;
-    return spec;
+    // From, at, up, vertical field of view, size (common/camera.hpp).
+    return CameraSpec{{0.0f, 1.3f, 4.0f}, {0.0f, 1.0f, 0.0f},
+                      {0.0f, 1.0f, 0.0f}, vfov_degrees, width, height};
 }
 
 inline DiscScene figure_scene()

@@ -15,14 +15,9 @@ constexpr float figure_vfov_degrees = 38.0f;
 
 inline CameraSpec figure_camera(int width, int height)
 {
-    CameraSpec spec;
-    spec.from = {0.0f, 1.6f, 5.6f};
-    spec.at = {0.0f, 0.95f, -0.6f};
-    spec.up = {0.0f, 1.0f, 0.0f};
-    spec.vfov_degrees = figure_vfov_degrees;
-    spec.width = width;
-    spec.height = height;
-    return spec;
+    // From, at, up, vertical field of view, size (common/camera.hpp).
+    return CameraSpec{{0.0f, 1.6f, 5.6f}, {0.0f, 0.95f, -0.6f},
+                      {0.0f, 1.0f, 0.0f}, figure_vfov_degrees, width, height};
 }
 
 inline WhittedScene figure_scene()

@@ -23,14 +23,9 @@ constexpr float figure_vfov_degrees = 40.0f;
 
 inline CameraSpec figure_camera(int width, int height, float scale = 1.0f)
 {
-    CameraSpec spec;
-    spec.from = scale * point3(0.0f, 2.3f, 6.5f);
-    spec.at = scale * point3(0.3f, 0.8f, -0.6f);
-    spec.up = {0.0f, 1.0f, 0.0f};
-    spec.vfov_degrees = figure_vfov_degrees;
-    spec.width = width;
-    spec.height = height;
-    return spec;
+    // From, at, up, vertical field of view, size (common/camera.hpp).
+    return CameraSpec{scale * point3(0.0f, 2.3f, 6.5f), scale * point3(0.3f, 0.8f, -0.6f),
+                      {0.0f, 1.0f, 0.0f}, figure_vfov_degrees, width, height};
 }
 
 // The mesh's faces into the scene, each with `material`.

@@ -23,14 +23,9 @@ constexpr float wall_z = -5.0f;
 
 inline CameraSpec panel_camera(int width, int height)
 {
-    CameraSpec spec;
-    spec.from = {0.0f, 2.9f, 6.4f};
-    spec.at = {0.3f, 0.75f, -0.6f};
-    spec.up = {0.0f, 1.0f, 0.0f};
-    spec.vfov_degrees = figure_vfov_degrees;
-    spec.width = width;
-    spec.height = height;
-    return spec;
+    // From, at, up, vertical field of view, size (common/camera.hpp).
+    return CameraSpec{{0.0f, 2.9f, 6.4f}, {0.3f, 0.75f, -0.6f},
+                      {0.0f, 1.0f, 0.0f}, figure_vfov_degrees, width, height};
 }
 
 // The right panel's scene: the area lights.

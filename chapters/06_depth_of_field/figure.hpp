@@ -21,14 +21,9 @@ constexpr float figure_vfov_degrees = 36.0f;
 
 inline CameraSpec figure_camera(int width, int height)
 {
-    CameraSpec spec;
-    spec.from = {0.0f, 1.6f, 6.6f};
-    spec.at = {0.6f, 0.0f, -1.0f};
-    spec.up = {0.0f, 1.0f, 0.0f};
-    spec.vfov_degrees = figure_vfov_degrees;
-    spec.width = width;
-    spec.height = height;
-    return spec;
+    // From, at, up, vertical field of view, size (common/camera.hpp).
+    return CameraSpec{{0.0f, 1.6f, 6.6f}, {0.6f, 0.0f, -1.0f},
+                      {0.0f, 1.0f, 0.0f}, figure_vfov_degrees, width, height};
 }
 
 // The spheres' centres, nearest first, all of radius 0.5 and resting on the floor. The middle one
