@@ -33,6 +33,15 @@ struct TriangleHit {
 using Sphere = BasicSphere<float>;
 using Triangle = BasicTriangle<float>;
 
+// An open cone or cylinder (equal radii) between two discs, NFF's `c`; the caps are not part of it.
+// Scene files bring them (the figures have none); their test is given, in cone.hpp.
+struct Cone {
+    point3 base;
+    float base_radius;  // >= 0
+    point3 apex;        // != base
+    float apex_radius;  // >= 0, not both radii 0
+};
+
 // The unit normals at a triangle's corners, for smooth shading: a mesh that approximates a curved
 // surface gives each corner the surface's normal there, and the hit interpolates them.
 struct CornerNormals {
