@@ -59,8 +59,9 @@ bool occluded(const LitScene& scene, const point3& origin, const point3& light, 
     //    the light's distance, and the ray's direction is to_light / d (unit, as the sphere test needs).
     // 2. It looks only at t in Interval{t_min, d * (1 - shadow_epsilon)}: not behind the origin,
     //    not at the light, not beyond it.
-    // 3. Test every sphere and every triangle with hit_sphere(ray, sphere, range, lit_tests.sphere)
-    //    and hit_triangle(ray, tri, range, lit_tests.triangle): return true at the first hit,
+    // 3. Test every sphere, every triangle and every cone with
+    //    hit_sphere(ray, sphere, range, lit_tests.sphere), hit_triangle(ray, tri, range,
+    //    lit_tests.triangle) and hit_cone_counted(ray, cone, range): return true at the first hit,
     //    without looking further. false when nothing is in the way.
     // Hint: unlike closest_hit (closest_hit.hpp), never shrink the range: any hit will do.
     // SOLUTION BEGIN
@@ -73,6 +74,9 @@ bool occluded(const LitScene& scene, const point3& origin, const point3& light, 
             return true;
     for (const Triangle& tri : scene.triangles)
         if (hit_triangle(feeler, tri, range, lit_tests.triangle))
+            return true;
+    for (const Cone& cone : scene.cones)
+        if (hit_cone_counted(feeler, cone, range))
             return true;
     return false;
     // SOLUTION END

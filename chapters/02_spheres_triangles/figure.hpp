@@ -53,8 +53,7 @@ inline ShapeScene figure_scene()
 // seen edge-on darken and each facet of a flat mesh gets its own shade.
 inline color shade(const ShapeScene& scene, const Ray& ray, const Hit& hit)
 {
-    const color albedo = scene.object_is_sphere(hit.object) ? scene.sphere_albedo[hit.object]
-                                                            : scene.triangle_albedo[scene.triangle_index(hit.object)];
+    const color& albedo = scene.albedo_of(hit.object);
     const float headlight = std::abs(glm::dot(hit.n, ray.dir));
     return albedo * (0.2f + 0.8f * headlight);
 }

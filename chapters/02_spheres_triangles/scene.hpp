@@ -1,10 +1,11 @@
 // Chapter 02's scene: spheres and triangles, each with its colour; triangles also carry their
 // corners' normals so meshes of curved surfaces can be shaded smoothly. That is all the figure
-// needs (DESIGN.md: model only what a scene requires).
+// needs (DESIGN.md: model only what a scene requires). Scene files (NFF) also hold open cones and
+// cylinders, so the scene has a third array for them (cone.hpp); the figure has none.
 //
 // The shapes sit in flat arrays of geometry only (what the intersection tests read); what shading
 // reads sits in arrays beside them, index for index. A hit names its object by one number:
-// spheres first, then triangles (`object_is_sphere`, `triangle_index`).
+// spheres first, then triangles, then cones (`object_is_sphere`, `triangle_index`, `cone_index`).
 #pragma once
 
 #include "02_spheres_triangles/shapes.hpp"
@@ -22,10 +23,23 @@ struct ShapeScene {
     std::vector<CornerNormals> corner_normals;  // one per triangle; a flat one has its face normal thrice
     std::vector<color> triangle_albedo;
 
+    std::vector<Cone> cones;
+    std::vector<color> cone_albedo;
+
     color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
 
     bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
     int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
+    bool object_is_cone(int object) const { return cone_index(object) >= 0; }
+    int cone_index(int object) const { return triangle_index(object) - static_cast<int>(triangles.size()); }
+
+    // The colour of the object a hit names.
+    const color& albedo_of(int object) const
+    {
+        if (object_is_sphere(object))
+            return sphere_albedo[object];
+        return object_is_cone(object) ? cone_albedo[cone_index(object)] : triangle_albedo[triangle_index(object)];
+    }
 
     void add_sphere(const Sphere& sphere, const color& albedo)
     {
@@ -40,6 +54,12 @@ struct ShapeScene {
         triangles.push_back(tri);
         corner_normals.push_back(normals);
         triangle_albedo.push_back(albedo);
+    }
+
+    void add_cone(const Cone& cone, const color& albedo)
+    {
+        cones.push_back(cone);
+        cone_albedo.push_back(albedo);
     }
 
     // A flat triangle: its face normal, (b - a) x (c - a) made unit, at every corner.

@@ -1,5 +1,5 @@
-// Chapter 03's scene: chapter 02's spheres and triangles, each with what Whitted's shading reads
-// of it (a mirror's share, a glass's share and index of refraction, a floor's checkers), one
+// Chapter 03's scene: chapter 02's spheres and triangles (and cones, from scene files), each with
+// what Whitted's shading reads of it (a mirror's share, a glass's share and index of refraction, a floor's checkers), one
 // directional light, and an ambient term. That is all the figure needs (DESIGN.md: model only
 // what a scene requires): no point lights and no shadows yet, those are chapter 04's lesson.
 //
@@ -41,6 +41,7 @@ struct WhittedScene {
     ShapeScene shapes;  // geometry and diffuse colours (chapter 02); shapes.background is the sky at the horizon
     std::vector<Material> sphere_materials;    // sphere_materials[k] is the material of shapes.spheres[k]
     std::vector<Material> triangle_materials;  // and of shapes.triangles[k]
+    std::vector<Material> cone_materials;      // and of shapes.cones[k] (scene files only)
     color zenith{0.0f};  // the sky straight up; it blends into shapes.background toward the horizon
     Sun sun;
     color ambient{0.0f};  // Whitted's I_a: the light that reaches every surface from everywhere
@@ -48,8 +49,10 @@ struct WhittedScene {
     // The material of the object a hit names (Hit::object: spheres first, then triangles).
     const Material& material(int object) const
     {
-        return shapes.object_is_sphere(object) ? sphere_materials[object]
-                                               : triangle_materials[shapes.triangle_index(object)];
+        if (shapes.object_is_sphere(object))
+            return sphere_materials[object];
+        return shapes.object_is_cone(object) ? cone_materials[shapes.cone_index(object)]
+                                             : triangle_materials[shapes.triangle_index(object)];
     }
 
     // The diffuse colour of the object at point p: its albedo, or a checker square's colour.
@@ -73,8 +76,7 @@ struct WhittedScene {
 inline color WhittedScene::albedo(int object, const point3& p) const
 {
     const Material& m = material(object);
-    const color base = shapes.object_is_sphere(object) ? shapes.sphere_albedo[object]
-                                                       : shapes.triangle_albedo[shapes.triangle_index(object)];
+    const color& base = shapes.albedo_of(object);
     if (m.checker <= 0.0f)
         return base;
     // Square (cx, cz) is odd when cx + cz is odd; fmod keeps this exact for far squares, where

@@ -5,8 +5,8 @@
 // and the chapter's program call these functions as they are declared here. The lesson is
 // README.md beside this file.
 //
-// Given code you call from your answers: hit_sphere and hit_triangle with lit_tests
-// (closest_hit.hpp: they count each intersection test) in 04.2, and light_blocked (feeler.hpp:
+// Given code you call from your answers: hit_sphere and hit_triangle with lit_tests, and
+// hit_cone_counted (closest_hit.hpp: they count each intersection test) in 04.2, and light_blocked (feeler.hpp:
 // one counted shadow feeler, sent the way the settings say) in 04.4.
 #pragma once
 
@@ -36,9 +36,10 @@ constexpr float shadow_epsilon = 1e-4f;
 // and the point light at `light`? The feeler is the ray from `origin` along the unit vector toward
 // the light, and it looks only at t strictly between `t_min` and the light's distance times
 // (1 - shadow_epsilon): an occluder behind the origin, at the light or beyond it does not count.
-// It returns true as soon as any sphere or triangle is hit in that range, without looking for the
-// nearest: any occluder shadows. Test every object with hit_sphere / hit_triangle and lit_tests
-// (closest_hit.hpp), which count the tests.
+// It returns true as soon as any sphere, triangle or cone is hit in that range, without looking
+// for the nearest: any occluder shadows. Test every object with hit_sphere / hit_triangle and
+// lit_tests, and hit_cone_counted (closest_hit.hpp), which count the tests. (Cones come only from
+// scene files, --scene; the figure has none.)
 bool occluded(const LitScene& scene, const point3& origin, const point3& light, float t_min);
 
 // Wachter and Binder's constants (Ray Tracing Gems, ch. 6, "A Fast and Robust Method for Avoiding

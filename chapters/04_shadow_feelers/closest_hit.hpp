@@ -16,6 +16,7 @@
 #include "common/hit.hpp"
 
 #include <optional>
+#include <vector>
 
 namespace rt {
 
@@ -46,9 +47,12 @@ inline vec3 face_normal(const Triangle& tri)
     return glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
 }
 
-// The nearest hit over all spheres and triangles with t strictly inside `range`, its point on the
-// surface and its geometric normal (the sphere's outward one, a triangle's face normal).
-inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Interval range)
+// The nearest hit over all spheres, triangles and cones with t strictly inside `range`, its point on
+// the surface and its geometric normal (the sphere's and the cone's outward one, a triangle's face
+// normal). With `one_sided`, triangle k with one_sided[k] set is seen from its front only: a ray
+// that meets its back passes through (the classic NFF rules' opaque polygons, classic.hpp).
+inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Interval range,
+                                      const std::vector<bool>* one_sided = nullptr)
 {
     int nearest = -1;
     TriangleHit<float> nearest_triangle{};
@@ -59,9 +63,17 @@ inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Int
         }
     for (int k = 0; k < static_cast<int>(scene.triangles.size()); ++k)
         if (const std::optional<TriangleHit<float>> hit = hit_triangle(ray, scene.triangles[k], range, lit_tests.triangle)) {
+            if (one_sided && (*one_sided)[k] && glm::dot(face_normal(scene.triangles[k]), ray.dir) > 0.0f)
+                continue;  // its back
             range.max = hit->t;
             nearest = static_cast<int>(scene.spheres.size()) + k;
             nearest_triangle = *hit;
+        }
+    const int first_cone = static_cast<int>(scene.spheres.size() + scene.triangles.size());
+    for (int k = 0; k < static_cast<int>(scene.cones.size()); ++k)
+        if (const std::optional<float> t = hit_cone_counted(ray, scene.cones[k], range)) {
+            range.max = *t;
+            nearest = first_cone + k;
         }
     if (nearest < 0)
         return std::nullopt;
@@ -69,6 +81,11 @@ inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Int
         const Sphere& sphere = scene.spheres[nearest];
         const point3 p = sphere_surface_point(sphere, ray.at(range.max));
         return Hit{range.max, p, sphere_normal(sphere, p), nearest};
+    }
+    if (scene.object_is_cone(nearest)) {
+        const Cone& cone = scene.cones[scene.cone_index(nearest)];
+        const point3 p = cone_surface_point(cone, ray.at(range.max));
+        return Hit{range.max, p, cone_normal(cone, p), nearest};
     }
     const Triangle& tri = scene.triangles[scene.triangle_index(nearest)];
     return Hit{range.max, triangle_surface_point(tri, nearest_triangle), face_normal(tri), nearest};

@@ -1,10 +1,11 @@
-// Chapter 04's scene: chapter 02's spheres and triangles, a material per object, point lights and
-// an ambient light. That is all local shading with shadow feelers reads (DESIGN.md: model only what
-// a scene requires): a material has only the fields the shading formula uses.
+// Chapter 04's scene: chapter 02's spheres and triangles (and cones, from scene files), a material
+// per object, point lights and an ambient light. That is all local shading with shadow feelers
+// reads (DESIGN.md: model only what a scene requires): a material has only the fields the shading
+// formula uses.
 //
 // The shapes sit in flat arrays of geometry only (what the intersection tests read); each shape
 // names its material by index, in an array beside it. A hit names its object by one number:
-// spheres first, then triangles, as in chapter 02.
+// spheres first, then triangles, then cones, as in chapter 02.
 #pragma once
 
 #include "02_spheres_triangles/shapes.hpp"
@@ -36,6 +37,8 @@ struct LitScene {
     std::vector<int> sphere_material;    // sphere_material[k] indexes `materials` for spheres[k]
     std::vector<Triangle> triangles;
     std::vector<int> triangle_material;
+    std::vector<Cone> cones;
+    std::vector<int> cone_material;
     std::vector<PhongMaterial> materials;
 
     std::vector<PointLight> lights;
@@ -44,11 +47,18 @@ struct LitScene {
 
     bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
     int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
+    bool object_is_cone(int object) const { return cone_index(object) >= 0; }
+    int cone_index(int object) const { return triangle_index(object) - static_cast<int>(triangles.size()); }
 
-    const PhongMaterial& material_of(int object) const
+    // The index into `materials` of the object a hit names.
+    int material_index(int object) const
     {
-        return materials[object_is_sphere(object) ? sphere_material[object] : triangle_material[triangle_index(object)]];
+        if (object_is_sphere(object))
+            return sphere_material[object];
+        return object_is_cone(object) ? cone_material[cone_index(object)] : triangle_material[triangle_index(object)];
     }
+
+    const PhongMaterial& material_of(int object) const { return materials[material_index(object)]; }
 
     int add_material(const PhongMaterial& m)
     {
@@ -68,6 +78,13 @@ struct LitScene {
         assert(material >= 0 && material < static_cast<int>(materials.size()));
         triangles.push_back(tri);
         triangle_material.push_back(material);
+    }
+
+    void add_cone(const Cone& cone, int material)
+    {
+        assert(material >= 0 && material < static_cast<int>(materials.size()));
+        cones.push_back(cone);
+        cone_material.push_back(material);
     }
 };
 

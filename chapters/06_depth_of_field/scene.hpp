@@ -29,10 +29,7 @@ struct FocusScene {
 inline float checker_factor(const FocusScene& scene, int object, const point3& p)
 {
     const Checkerboard& c = scene.checker;
-    const LitScene& lit = scene.lit;
-    const int material = lit.object_is_sphere(object) ? lit.sphere_material[object]
-                                                      : lit.triangle_material[lit.triangle_index(object)];
-    if (material != c.material)
+    if (scene.lit.material_index(object) != c.material)
         return 1.0f;
     // Square (cx, cz) is dark when cx + cz is odd; fmod keeps this exact for far squares, where a
     // cast of the index to an integer would overflow (as chapter 01's floor does).

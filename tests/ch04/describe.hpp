@@ -34,12 +34,22 @@ inline std::string show(const Triangle& tri)
     return "the triangle " + show(tri.a) + ", " + show(tri.b) + ", " + show(tri.c);
 }
 
+inline std::string show(const Cone& cone)
+{
+    std::ostringstream s;
+    s.precision(9);
+    s << "the open cone from " << show(cone.base) << " (radius " << cone.base_radius << ") to " << show(cone.apex)
+      << " (radius " << cone.apex_radius << ")";
+    return s.str();
+}
+
 // The scene's objects, or how many when there are too many to list.
 inline std::string show(const LitScene& scene)
 {
-    if (scene.spheres.size() + scene.triangles.size() > 4) {
+    if (scene.spheres.size() + scene.triangles.size() + scene.cones.size() > 4) {
         std::ostringstream s;
-        s << scene.spheres.size() << " spheres and " << scene.triangles.size() << " triangles";
+        s << scene.spheres.size() << " spheres, " << scene.triangles.size() << " triangles and " << scene.cones.size()
+          << " cones";
         return s.str();
     }
     std::string s;
@@ -47,6 +57,8 @@ inline std::string show(const LitScene& scene)
         s += (s.empty() ? "" : " and ") + show(sphere);
     for (const Triangle& tri : scene.triangles)
         s += (s.empty() ? "" : " and ") + show(tri);
+    for (const Cone& cone : scene.cones)
+        s += (s.empty() ? "" : " and ") + show(cone);
     return s.empty() ? "an empty scene" : s;
 }
 
@@ -87,7 +99,8 @@ inline std::string show(const self_intersection::Feeler& f)
 }
 
 // A scene of objects of one plain material.
-inline LitScene scene_of(const std::vector<Sphere>& spheres, const std::vector<Triangle>& triangles)
+inline LitScene scene_of(const std::vector<Sphere>& spheres, const std::vector<Triangle>& triangles,
+                         const std::vector<Cone>& cones = {})
 {
     LitScene scene;
     const int m = scene.add_material({color(0.5f), color(0.0f), 1.0f});
@@ -95,6 +108,8 @@ inline LitScene scene_of(const std::vector<Sphere>& spheres, const std::vector<T
         scene.add_sphere(s, m);
     for (const Triangle& t : triangles)
         scene.add_triangle(t, m);
+    for (const Cone& c : cones)
+        scene.add_cone(c, m);
     return scene;
 }
 

@@ -87,6 +87,20 @@ GRADED_TEST("occluded: stops at the first occluder it finds (1 intersection test
     CHECK(intersection_tests() == 20);
 }
 
+GRADED_TEST("occluded: a cylinder or a cone from a scene file between the point and the light blocks it", "04.2", 2)
+{
+    // Lying across the feeler: a cylinder along x at height 5, and a cone standing on the ground
+    // beside the point with the feeler slanting through its wall.
+    const Cone cylinder{{-2, 5, 0}, 0.5f, {2, 5, 0}, 0.5f};
+    const Cone cone{{1, 0, 0}, 1.5f, {1, 4, 0}, 0.0f};
+    check({scene_of({}, {}, {cylinder}), ground, overhead, 0.0f, true, "the cylinder lies across the feeler"});
+    check({scene_of({}, {}, {cone}), ground, {4, 3, 0}, 0.0f, true, "the point lies inside the cone, and the feeler leaves through its wall"});
+    // An open cylinder around the feeler has no caps: the feeler runs up its inside, unblocked.
+    const Cone chimney{{0, 2, 0}, 1.0f, {0, 8, 0}, 1.0f};
+    check({scene_of({}, {}, {chimney}), ground, overhead, 0.0f, false,
+           "the feeler runs up the axis of an open cylinder, which has no caps"});
+}
+
 GRADED_TEST("occluded: t_min is honoured, a surface nearer than t_min to the origin does not block", "04.2", 2)
 {
     const LitScene scene = scene_of({}, square_facing_up({0, 0.001f, 0}, 1));
