@@ -5,6 +5,7 @@
 
 #include "common/error.hpp"
 #include "common/render.hpp"
+#include "common/stats.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -30,6 +31,10 @@ public:
     bool parse(int argc, const char* const* argv, std::ostream& out);
     void print_usage(std::ostream& out) const;
 
+    // Whether the last parse met the option `name`: a program whose default comes from elsewhere
+    // (a scene file's resolution) keeps that default unless the user asked otherwise.
+    bool given(const std::string& name) const;
+
 private:
     struct Entry {
         std::string name, value_hint, help;
@@ -38,6 +43,7 @@ private:
     };
     std::string program_, summary_;
     std::vector<Entry> entries_;
+    std::vector<std::string> given_;
 };
 
 // The options every chapter program has.
@@ -57,8 +63,11 @@ void add_common_options(CommandLine& cli, CommonOptions& options);
 RenderSettings render_settings(const CommonOptions& options);
 
 // What every chapter program does without --sweep: renders its figure (timed), writes it to
-// options.out, and prints the --stats lines when asked. Returns the exit status, 0.
-int write_figure(const CommonOptions& options, const std::function<Image()>& render);
+// options.out, and prints the --stats lines when asked (print_stats, or the printer given).
+// Returns the exit status, 0.
+using StatsPrinter = void (*)(std::ostream&, const Counts&, double);
+int write_figure(const CommonOptions& options, const std::function<Image()>& render,
+                 StatsPrinter print = print_stats);
 
 // Runs a program's body, turning InputError into "program: message" on stderr and exit status 2.
 int run_program(const std::string& program, const std::function<int()>& body);

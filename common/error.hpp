@@ -14,4 +14,7 @@ struct InputError : std::runtime_error {
 // Exit status for bad input (an unknown flag, an impossible value, a malformed file).
 constexpr int exit_bad_input = 2;
 
+// Exit status for a picture with a NaN or infinite pixel: the kit's own bug, not the input's.
+constexpr int exit_kit_bug = 3;
+
 }  // namespace rt

@@ -1,6 +1,7 @@
 #include "common/stats.hpp"
 
 #include <mutex>
+#include <utility>
 
 namespace rt {
 
@@ -45,13 +46,34 @@ std::uint64_t total_rays(const Counts& counts)
            counts[static_cast<size_t>(Counter::reflected_rays)] + counts[static_cast<size_t>(Counter::refracted_rays)];
 }
 
-void print_stats(std::ostream& out, const Counts& counts, double seconds)
+namespace {
+
+void print_totals(std::ostream& out, const Counts& counts, double seconds)
 {
-    for (size_t k = 0; k < counts.size(); ++k)
-        out << counter_names[k] << '=' << counts[k] << '\n';
     out << "rays=" << total_rays(counts) << '\n';
     out << "seconds=" << seconds << '\n';
     out << "rays_per_second=" << (seconds > 0.0 ? static_cast<double>(total_rays(counts)) / seconds : 0.0) << '\n';
+}
+
+}  // namespace
+
+void print_stats(std::ostream& out, const Counts& counts, double seconds)
+{
+    for (size_t k = 0; k < standard_counters; ++k)
+        out << counter_names[k] << '=' << counts[k] << '\n';
+    print_totals(out, counts, seconds);
+}
+
+void print_classic_stats(std::ostream& out, const Counts& counts, double seconds)
+{
+    const std::pair<const char*, Counter> names[] = {
+        {"eye_rays", Counter::primary_rays},     {"eye_hits", Counter::primary_hits},
+        {"reflect_rays", Counter::reflected_rays}, {"refract_rays", Counter::refracted_rays},
+        {"shadow_rays", Counter::shadow_rays},   {"shadow_blocked", Counter::shadow_blocked},
+        {"secondary_hits", Counter::secondary_hits}, {"intersection_tests", Counter::intersection_tests}};
+    for (const auto& [name, counter] : names)
+        out << name << '=' << counts[static_cast<size_t>(counter)] << '\n';
+    print_totals(out, counts, seconds);
 }
 
 }  // namespace rt

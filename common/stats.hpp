@@ -17,11 +17,20 @@ enum class Counter {
     reflected_rays,
     refracted_rays,
     intersection_tests,
+    // Counted only by the classic NFF test mode (chapter 04's --classic), which reports them under
+    // the SPD names (print_classic_stats); print_stats leaves them out.
+    primary_hits,
+    secondary_hits,
+    shadow_blocked,
     count_  // the number of counters, not a counter
 };
 
 constexpr std::array<const char*, static_cast<size_t>(Counter::count_)> counter_names = {
-    "rays_primary", "rays_shadow", "rays_reflected", "rays_refracted", "intersection_tests"};
+    "rays_primary", "rays_shadow", "rays_reflected", "rays_refracted", "intersection_tests",
+    "hits_primary", "hits_secondary", "shadow_blocked"};
+
+// The counters every program reports: those before primary_hits.
+constexpr size_t standard_counters = static_cast<size_t>(Counter::primary_hits);
 
 using Counts = std::array<std::uint64_t, static_cast<size_t>(Counter::count_)>;
 
@@ -54,5 +63,10 @@ private:
 
 // The `--stats` format: one key=value per line, counters first, then seconds and rays_per_second.
 void print_stats(std::ostream& out, const Counts& counts, double seconds);
+
+// The same format with the names of the classic NFF test rules (Haines' Standard Procedural
+// Databases): eye_rays, eye_hits, reflect_rays, refract_rays, shadow_rays, shadow_blocked,
+// secondary_hits, then intersection_tests, rays, seconds and rays_per_second.
+void print_classic_stats(std::ostream& out, const Counts& counts, double seconds);
 
 }  // namespace rt

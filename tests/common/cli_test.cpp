@@ -64,3 +64,20 @@ TEST_CASE("run_program turns bad input into exit status 2", "[common]")
     CHECK(run_program("p", [] { return 0; }) == 0);
     CHECK(run_program("p", []() -> int { throw InputError("nope"); }) == exit_bad_input);
 }
+
+TEST_CASE("the command line tells which options were given, so a scene file's size can stand", "[common]")
+{
+    CommonOptions o;
+    CommandLine cli("prog", "test");
+    add_common_options(cli, o);
+    const char* args[] = {"prog", "--height", "50", "--stats"};
+    std::ostringstream out;
+    REQUIRE(cli.parse(4, args, out));
+    CHECK(cli.given("--height"));
+    CHECK(cli.given("--stats"));
+    CHECK_FALSE(cli.given("--width"));
+    const char* again[] = {"prog", "--width", "7"};
+    REQUIRE(cli.parse(3, again, out));
+    CHECK(cli.given("--width"));
+    CHECK_FALSE(cli.given("--height"));  // a parse forgets the one before
+}

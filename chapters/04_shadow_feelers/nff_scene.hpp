@@ -1,0 +1,50 @@
+// A scene file (NFF, common/nff.hpp) as chapter 04's scene: its shapes, its materials as Phong's
+// (k_d = Kd times the fill colour, a white highlight of weight Ks and exponent Shine), and its
+// lights as point lights with shadow feelers. Chapters 05 and 06 build on the same scene.
+//
+// Chapter 04 shades flat, with the geometric normal: a patch's vertex normals (`pp`) are not used.
+// Mirror and glass (Ks and T) need chapter 03's recursion: the classic mode (classic.hpp) has it.
+#pragma once
+
+#include "02_spheres_triangles/nff_scene.hpp"
+#include "04_shadow_feelers/scene.hpp"
+#include "common/scene_file.hpp"
+
+namespace rt {
+
+inline PhongMaterial phong_material(const NffMaterial& m)
+{
+    return {m.kd * m.rgb, color(m.ks), m.shine};
+}
+
+// The distance at which an NFF light shines with its own colour: from the light to the point the
+// view looks at (or, for a light at that point, from the eye). A point light falls off as 1 / d^2
+// (chapter 04's lesson) where NFF's does not fall off at all: so the scene's centre of interest
+// is lit as NFF lights it, nearer surfaces brighter and farther ones darker.
+inline float nff_light_distance(const NffScene& nff, const NffLight& light)
+{
+    const float d = glm::length(light.position - nff.view.at);
+    return d > 0.0f ? d : glm::length(nff.view.from - nff.view.at);
+}
+
+inline LitScene lit_scene(const NffScene& nff)
+{
+    LitScene scene;
+    scene.background = nff.background;
+    scene.ambient = color(nff_ambient);
+    for (const NffMaterial& m : nff.materials)
+        scene.add_material(phong_material(m));
+    for (const NffSphere& s : nff.spheres)
+        scene.add_sphere({s.center, s.radius}, s.material);
+    for (const NffTriangle& t : nff.triangles)
+        scene.add_triangle(triangle_of(t), t.material);
+    for (const NffCone& c : nff.cones)
+        scene.add_cone(cone_of(c), c.material);
+    for (const NffLight& light : nff.lights) {
+        const float d = nff_light_distance(nff, light);
+        scene.lights.push_back({light.position, nff_light_colour(nff, light) * d * d});
+    }
+    return scene;
+}
+
+}  // namespace rt
