@@ -95,3 +95,38 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND trade_files ${outputs})
 endforeach()
 add_custom_target(trade DEPENDS ${trade_files})
+
+# The kit's NFF scenes (common/scenes/) rendered by every program from chapter 02 on, each with its
+# chapter's features, and by chapter 04's classic NFF mode: `cmake --build <build> --target scenes`
+# writes build/scenes/NN_name-SCENE.png (04_shadow_feelers-classic-SCENE.png for the classic mode).
+set(RT_SCENES_DIR "${CMAKE_SOURCE_DIR}/build/scenes" CACHE PATH "Where the scenes target writes its pictures")
+file(GLOB kit_scene_files "${CMAKE_SOURCE_DIR}/common/scenes/*.nff")
+set(scene_pictures "")
+foreach(chapter IN LISTS RT_CHAPTERS)
+  if(chapter MATCHES "^01_")
+    continue()  # chapter 01's discs and planes are not NFF's shapes
+  endif()
+  foreach(scene_file IN LISTS kit_scene_files)
+    get_filename_component(scene "${scene_file}" NAME_WE)
+    set(modes "plain")
+    if(chapter STREQUAL "04_shadow_feelers")
+      list(APPEND modes "classic")
+    endif()
+    foreach(mode IN LISTS modes)
+      set(picture "${RT_SCENES_DIR}/${chapter}-${scene}.png")
+      set(args ${RT_FIGURE_ARGS_${chapter}})
+      if(mode STREQUAL "classic")
+        set(picture "${RT_SCENES_DIR}/${chapter}-classic-${scene}.png")
+        set(args --classic)
+      endif()
+      add_custom_command(OUTPUT "${picture}"
+        COMMAND "${CMAKE_COMMAND}" -E make_directory "${RT_SCENES_DIR}"
+        COMMAND ${chapter} --scene "${scene_file}" --out "${picture}" ${args}
+        DEPENDS ${chapter} "${scene_file}"
+        COMMENT "Rendering ${picture}"
+        VERBATIM)
+      list(APPEND scene_pictures "${picture}")
+    endforeach()
+  endforeach()
+endforeach()
+add_custom_target(scenes DEPENDS ${scene_pictures})

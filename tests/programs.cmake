@@ -70,3 +70,49 @@ rt_expect_exit(05_soft_shadows.reference_not_a_square 05_soft_shadows 2
 rt_expect_exit(05_soft_shadows.random_takes_any_count 05_soft_shadows 0 "rays_shadow=[1-9][0-9]*\n"
   --width 30 --height 20 --light-samples 3 --sampling random
   --out "${CMAKE_CURRENT_BINARY_DIR}/programs/05_soft_shadows_random3.png" --stats)
+
+# Scene files (--scene FILE.nff, issue: scenes from files): every program from chapter 02 on renders
+# each of the kit's scenes; a bad file or a bad combination of options is one line and exit 2.
+set(kit_scenes spheres cones concave patches)
+set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field)
+foreach(chapter IN LISTS scene_chapters)
+  foreach(scene IN LISTS kit_scenes)
+    # 24 wide: the file's 400 x 400 keeps its aspect, so 24 x 24 = 576 eye rays.
+    rt_expect_exit(${chapter}.scene_${scene} ${chapter} 0 "rays_primary=576\n"
+      --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 24 --stats
+      --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_${scene}.png")
+  endforeach()
+  rt_expect_exit(${chapter}.scene_missing ${chapter} 2 "/no/such/scene.nff:1: no such file" --scene /no/such/scene.nff)
+  rt_expect_exit(${chapter}.scene_malformed ${chapter} 2 "sphere_negative_radius.nff:13: [^\n]*radius"
+    --scene "${CMAKE_CURRENT_SOURCE_DIR}/bad_scenes/sphere_negative_radius.nff")
+  rt_expect_exit(${chapter}.scene_with_sweep ${chapter} 2 "--sweep measures the chapter's own scenes; it does not take --scene"
+    --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --sweep)
+endforeach()
+rt_expect_exit(02_spheres_triangles.scene_file_resolution 02_spheres_triangles 0 "rays_primary=160000\n"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --stats
+  --out "${CMAKE_CURRENT_BINARY_DIR}/programs/02_spheres_triangles_file_resolution.png")
+rt_expect_exit(03_reflection_refraction.scene_glass_refracts 03_reflection_refraction 0 "rays_refracted=[1-9]"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 40 --stats
+  --out "${CMAKE_CURRENT_BINARY_DIR}/programs/03_reflection_refraction_scene_glass.png")
+rt_expect_exit(04_shadow_feelers.scene_scale 04_shadow_feelers 2 "--scale scales the figure's scene; it does not apply to --scene"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --scale 2)
+rt_expect_exit(04_shadow_feelers.classic_without_scene 04_shadow_feelers 2 "--classic .* needs --scene FILE.nff" --classic)
+rt_expect_exit(04_shadow_feelers.classic_spp 04_shadow_feelers 2 "--classic shoots one eye ray through each pixel corner: --spp must be 1, got 4"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --classic --spp 4)
+rt_expect_exit(05_soft_shadows.light_size_without_scene 05_soft_shadows 2 "--light-size sizes a scene file's lights" --light-size 0.2)
+
+# The classic NFF test rules, their counts worked by hand in each scene file's comments.
+set(classic_counts_one_wall "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n")
+set(classic_counts_two_mirrors "eye_rays=9\neye_hits=9\nreflect_rays=36\nrefract_rays=0\nshadow_rays=45\nshadow_blocked=0\nsecondary_hits=36\n")
+set(classic_counts_back_face "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=9\nsecondary_hits=0\n")
+set(classic_counts_total_internal_reflection "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n")
+set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
+foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall)
+  rt_expect_exit(04_shadow_feelers.classic_${scene} 04_shadow_feelers 0 "^${classic_counts_${scene}}"
+    --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
+    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/04_shadow_feelers_classic_${scene}.png")
+endforeach()
+# A w x h image shoots (w + 1) x (h + 1) eye rays.
+rt_expect_exit(04_shadow_feelers.classic_corner_rays 04_shadow_feelers 0 "^eye_rays=651\n"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/cones.nff" --classic --width 30 --height 20 --stats
+  --out "${CMAKE_CURRENT_BINARY_DIR}/programs/04_shadow_feelers_classic_corners.png")

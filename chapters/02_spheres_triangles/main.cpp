@@ -3,8 +3,10 @@
 // is wrong on the extreme cases, in float and in double.
 #include "02_spheres_triangles/extremes.hpp"
 #include "02_spheres_triangles/figure.hpp"
+#include "02_spheres_triangles/nff_scene.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -27,6 +29,7 @@ struct Options {
     int probes = 100000;
     int repeat = 7;
     std::string csv = "02_spheres_triangles.csv";
+    std::string scene;
 };
 
 ShapeTests tests_named(const Options& o)
@@ -217,12 +220,23 @@ int main(int argc, char** argv)
         cli.option("--probes", o.probes, "rays per extreme case in the sweep", 1000, 100000000);
         cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its table (the t errors go beside it, *_t_error.csv)");
+        add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const ShapeTests tests = tests_named(o);
+        check_scene_without_sweep(o.scene, o.sweep);
         if (o.sweep) {
             sweep(o);
             return 0;
+        }
+        if (!o.scene.empty()) {
+            const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            const ShapeScene scene = shape_scene(file.scene);
+            return write_figure(o.common, [&] {
+                return render(file.settings, [&](float x, float y, Rng&) {
+                    return ch02::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither), tests);
+                });
+            });
         }
         return write_figure(o.common, [&] { return ch02::render_figure(render_settings(o.common), tests); });
     });

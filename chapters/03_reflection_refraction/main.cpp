@@ -3,9 +3,11 @@
 // approximation strays from Fresnel's exact reflectance.
 #include "03_reflection_refraction/figure.hpp"
 #include "03_reflection_refraction/fresnel_table.hpp"
+#include "03_reflection_refraction/nff_scene.hpp"
 #include "03_reflection_refraction/rounds.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
 #include <functional>
@@ -26,6 +28,7 @@ struct Options {
     int repeat = 5;
     int angles = 1000001;
     std::string csv = "03_reflection_refraction.csv";
+    std::string scene;
 };
 
 FresnelModel model_named(const std::string& name)
@@ -164,9 +167,21 @@ int main(int argc, char** argv)
                    "its median", 1, 100);
         cli.option("--angles", o.angles, "angles of incidence per row of the Fresnel table", 1001, 100000001);
         cli.option("--csv", o.csv, "where --sweep writes its depth table (the others go beside it)");
+        add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         o.trace.fresnel = model_named(o.fresnel);
+        check_scene_without_sweep(o.scene, o.sweep);
+        if (!o.scene.empty()) {
+            const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            const WhittedScene scene = whitted_scene(file.scene);
+            return write_figure(o.common, [&] {
+                return render(file.settings, [&](float x, float y, Rng&) {
+                    return ch03::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither),
+                                          o.trace);
+                });
+            });
+        }
         if (o.sweep) {
             sweep_render(o);
             sweep_fresnel(o);

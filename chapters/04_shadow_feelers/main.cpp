@@ -2,10 +2,12 @@
 // the offset and shadow query of your choice, at any scale, and with --sweep measures the two
 // trades: how often each offset re-hits its own surface or misses a real occluder, at scales from
 // 1e-4 to 1e6; and what shadow feelers cost, any-hit against closest-hit.
+#include "04_shadow_feelers/classic.hpp"
 #include "04_shadow_feelers/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -28,6 +30,8 @@ struct Options {
     int probes = 100000;
     int repeat = 7;
     std::string csv = "04_shadow_feelers.csv";
+    std::string scene;
+    bool classic = false;
 };
 
 const std::vector<std::pair<std::string, Offset>> offsets = {
@@ -269,9 +273,35 @@ int main(int argc, char** argv)
         cli.option("--probes", o.probes, "feelers per scale and offset in the sweep", 1000, 100000000);
         cli.option("--repeat", o.repeat, "renders per feeler-cost row; the table gives the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its tables (*_missed.csv and *_cost.csv beside it)");
+        add_scene_option(cli, o.scene);
+        cli.flag("--classic", o.classic, "with --scene: the classic NFF test rules (corner rays, depth 5, SPD counts)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const FeelerSettings feelers = feelers_named(o);
+        check_scene_without_sweep(o.scene, o.sweep);
+        if (o.classic && o.scene.empty())
+            throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
+        if (o.classic && o.common.spp != 1)
+            throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
+                             std::to_string(o.common.spp));
+        if (!o.scene.empty() && cli.given("--scale"))
+            throw InputError("--scale scales the figure's scene; it does not apply to --scene");
+        if (!o.scene.empty()) {
+            const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            const float hither = file.scene.view.hither;
+            if (o.classic) {
+                const classic::ClassicScene scene = classic::classic_scene(file.scene);
+                return write_figure(
+                    o.common, [&] { return classic::render_classic(file.settings, file.camera, scene, hither); },
+                    print_classic_stats);
+            }
+            const LitScene scene = lit_scene(file.scene);
+            return write_figure(o.common, [&] {
+                return render(file.settings, [&](float x, float y, Rng&) {
+                    return ch04::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), hither), feelers);
+                });
+            });
+        }
         if (o.sweep) {
             sweep(o);
             return 0;

@@ -3,8 +3,10 @@
 // measures what samples per light cost and buy, random against stratified.
 #include "03_reflection_refraction/rounds.hpp"
 #include "05_soft_shadows/figure.hpp"
+#include "05_soft_shadows/nff_scene.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -27,6 +29,8 @@ struct Options {
     int reference_samples = 4096;
     int repeat = 5;
     std::string csv = "05_soft_shadows.csv";
+    std::string scene;
+    float light_size = nff_light_size;
 };
 
 SampleScheme scheme_named(const std::string& name)
@@ -149,9 +153,25 @@ int main(int argc, char** argv)
                    "stratified samples per light of the sweep's reference (a square)", 1, 1048576);
         cli.option("--repeat", o.repeat, "renders per sweep row; the table gives the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its table");
+        add_scene_option(cli, o.scene);
+        cli.option("--light-size", o.light_size,
+                   "with --scene: each light's disc radius, as a fraction of its distance to the view's 'at'", 0.0f, 10.0f);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const LightSampling sampling = sampling_of(o);
+        check_scene_without_sweep(o.scene, o.sweep);
+        if (o.scene.empty() && cli.given("--light-size"))
+            throw InputError("--light-size sizes a scene file's lights: it needs --scene FILE.nff");
+        if (!o.scene.empty()) {
+            const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            const AreaLitScene scene = area_lit_scene(file.scene, o.light_size);
+            return write_figure(o.common, [&] {
+                return render(file.settings, [&](float x, float y, Rng& rng) {
+                    return radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither),
+                                    sampling, rng);
+                });
+            });
+        }
         if (o.sweep) {
             if (grid_side(o.reference_samples) == 0)
                 throw InputError("--reference-samples must be a square (1, 4, 9, 16, ...), got " +

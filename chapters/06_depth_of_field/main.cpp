@@ -2,8 +2,10 @@
 // thin lens of any aperture and focus distance and, with --sweep, measures what lens samples per
 // pixel cost and buy.
 #include "06_depth_of_field/figure.hpp"
+#include "06_depth_of_field/nff_scene.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -23,6 +25,7 @@ struct Options {
     int reference_spp = 1024;
     int repeat = 3;
     std::string csv = "06_depth_of_field.csv";
+    std::string scene;
 };
 
 ThinLens lens_of(const Options& o)
@@ -111,9 +114,28 @@ int main(int argc, char** argv)
         cli.option("--reference-spp", o.reference_spp, "samples per pixel of the sweep's reference", 1, 65536);
         cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its table");
+        add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         lens_of(o);  // a bad lens is bad input, before any work
+        check_scene_without_sweep(o.scene, o.sweep);
+        if (!o.scene.empty()) {
+            // Focused on the view's `at` with the figure's ratio of aperture to focus, unless the
+            // command line says otherwise.
+            const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            const FocusScene scene = focus_scene(file.scene);
+            ThinLens lens = nff_lens(file.scene);
+            if (cli.given("--focus"))
+                lens.focus_distance = o.focus;
+            if (cli.given("--aperture"))
+                lens.aperture_radius = o.aperture;
+            return write_figure(o.common, [&] {
+                return render(file.settings, [&](float x, float y, Rng& rng) {
+                    return ch06::radiance(
+                        scene, beyond_hither(thin_lens_ray(file.camera, lens, x, y, rng), file.scene.view.hither));
+                });
+            });
+        }
         if (o.sweep) {
             sweep(o);
             return 0;
