@@ -364,17 +364,28 @@ private:
         scene_.lights.push_back(light);
     }
 
+    // A material's weight in [0, 1].
+    float share(const char* field)
+    {
+        const float value = non_negative("material", field);
+        if (value > 1.0f)
+            fail(last_number_.line, std::string("material: ") + field + " must lie between 0 and 1, got " +
+                                        quote(last_number_.text));
+        return value;
+    }
+
     void read_material(const Token& command)
     {
         NffMaterial m;
         m.line = command.line;
         m.rgb = read_colour("material");
-        m.kd = non_negative("material", "Kd");
-        m.ks = non_negative("material", "Ks");
+        // Kd and Ks are shares of the light. A share above 1 makes light: a mirror of Ks = 1e11
+        // between two others multiplies a path's colour by 1e11 at every bounce, to infinity and
+        // NaN within five (the render fuzzer found it).
+        m.kd = share("Kd");
+        m.ks = share("Ks");
         m.shine = non_negative("material", "Shine");
-        m.t = non_negative("material", "T");
-        if (m.t > 1.0f)
-            fail(last_number_.line, "material: T must lie between 0 and 1, got " + quote(last_number_.text));
+        m.t = share("T");
         m.ior = non_negative("material", "index of refraction");
         if (m.t > 0.0f && !(m.ior > 0.0f))
             fail(last_number_.line, "material: a transmitting material (T > 0) needs an index of refraction above 0, got " +

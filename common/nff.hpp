@@ -51,8 +51,8 @@ struct NffView {
 // after it until the next `f`.
 struct NffMaterial {
     color rgb{1.0f};  // >= 0
-    float kd = 1.0f;     // diffuse weight, >= 0
-    float ks = 0.0f;     // mirror reflection and highlight weight, >= 0
+    float kd = 1.0f;     // diffuse weight, in [0, 1]
+    float ks = 0.0f;     // mirror reflection and highlight weight, in [0, 1]
     float shine = 0.0f;  // Phong exponent of the highlight, >= 0
     float t = 0.0f;      // transmittance in [0, 1]; T > 0 makes an object two-sided (NFF)
     float ior = 0.0f;    // index of refraction, >= 0; above 0 whenever t > 0 (0 is common for opaque)

@@ -18,16 +18,28 @@ void check_scene_without_sweep(const std::string& path, bool sweep)
         throw InputError("--sweep measures the chapter's own scenes; it does not take --scene");
 }
 
-CameraSpec nff_camera_spec(const NffView& view, int width, int height)
+Camera nff_camera(const NffView& view, int width, int height)
 {
-    CameraSpec spec{view.from, view.at, view.up, view.angle_degrees, width, height};
+    Camera cam = make_camera({view.from, view.at, view.up, view.angle_degrees, width, height});
     if (height > width) {
-        // The angle spans the width: the vertical angle of the taller window.
+        // make_camera spans the angle up the window; a tall window takes it across instead. Set
+        // from the tangent, since the vertical angle it implies may lie within a float step of 180
+        // degrees (an angle of 179.9 over a 1 x 16384 image), which no angle can say.
         constexpr double degrees = 3.14159265358979323846 / 180.0;
-        const double half = std::tan(0.5 * view.angle_degrees * degrees) * height / width;
-        spec.vfov_degrees = static_cast<float>(2.0 * std::atan(half) / degrees);
+        const double half_width = std::tan(0.5 * static_cast<double>(view.angle_degrees) * degrees);
+        cam.r = static_cast<float>(half_width);
+        cam.t = static_cast<float>(half_width * height / width);
+        cam.l = -cam.r;
+        cam.b = -cam.t;
     }
-    return spec;
+    return cam;
+}
+
+Ray from_near_plane(const Ray& ray, const Camera& cam, float hither)
+{
+    // The ray climbs dir.(-w) of depth per unit of t; a camera ray always points in front.
+    const float depth_rate = glm::dot(ray.dir, -cam.w);
+    return depth_rate > 0.0f ? Ray{ray.at(hither / depth_rate), ray.dir} : ray;
 }
 
 SceneRender load_scene_render(const std::string& path, const CommonOptions& options, const CommandLine& cli)
@@ -43,8 +55,14 @@ SceneRender load_scene_render(const std::string& path, const CommonOptions& opti
         r.settings.width = height_given ? scaled(r.settings.height, view.width, view.height) : view.width;
     if (!height_given)
         r.settings.height = width_given ? scaled(r.settings.width, view.height, view.width) : view.height;
-    r.camera = make_camera(nff_camera_spec(r.scene.view, r.settings.width, r.settings.height));
+    r.camera = nff_camera(r.scene.view, r.settings.width, r.settings.height);
     return r;
+}
+
+vec3 nff_light_offset(const NffScene& scene, const NffLight& light)
+{
+    const vec3 offset = light.position - scene.view.at;
+    return glm::length(offset) > 0.0f ? offset : scene.view.from - scene.view.at;
 }
 
 color nff_light_colour(const NffScene& scene, const NffLight& light)

@@ -25,12 +25,10 @@ enum class Counter {
     count_  // the number of counters, not a counter
 };
 
-constexpr std::array<const char*, static_cast<size_t>(Counter::count_)> counter_names = {
-    "rays_primary", "rays_shadow", "rays_reflected", "rays_refracted", "intersection_tests",
-    "hits_primary", "hits_secondary", "shadow_blocked"};
-
-// The counters every program reports: those before primary_hits.
+// The counters every program reports, those before primary_hits, and their --stats names.
 constexpr size_t standard_counters = static_cast<size_t>(Counter::primary_hits);
+constexpr std::array<const char*, standard_counters> counter_names = {
+    "rays_primary", "rays_shadow", "rays_reflected", "rays_refracted", "intersection_tests"};
 
 using Counts = std::array<std::uint64_t, static_cast<size_t>(Counter::count_)>;
 

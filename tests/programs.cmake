@@ -74,11 +74,22 @@ rt_expect_exit(05_soft_shadows.random_takes_any_count 05_soft_shadows 0 "rays_sh
 # Scene files (--scene FILE.nff, issue: scenes from files): every program from chapter 02 on renders
 # each of the kit's scenes; a bad file or a bad combination of options is one line and exit 2.
 set(kit_scenes spheres cones concave patches)
+# How many objects each holds (spheres, triangles after triangulation, cones): chapter 02 tests
+# each of them once per eye ray, so its count of intersection tests proves the whole file arrived.
+set(objects_spheres 5)
+set(objects_cones 8)
+set(objects_concave 29)
+set(objects_patches 70)
 set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field)
 foreach(chapter IN LISTS scene_chapters)
   foreach(scene IN LISTS kit_scenes)
     # 24 wide: the file's 400 x 400 keeps its aspect, so 24 x 24 = 576 eye rays.
-    rt_expect_exit(${chapter}.scene_${scene} ${chapter} 0 "rays_primary=576\n"
+    set(expected "rays_primary=576\n")
+    if(chapter MATCHES "^02_")
+      math(EXPR tests "576 * ${objects_${scene}}")
+      string(APPEND expected ".*intersection_tests=${tests}\n")
+    endif()
+    rt_expect_exit(${chapter}.scene_${scene} ${chapter} 0 "${expected}"
       --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 24 --stats
       --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_${scene}.png")
   endforeach()
@@ -97,6 +108,8 @@ rt_expect_exit(03_reflection_refraction.scene_glass_refracts 03_reflection_refra
 rt_expect_exit(04_shadow_feelers.scene_scale 04_shadow_feelers 2 "--scale scales the figure's scene; it does not apply to --scene"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --scale 2)
 rt_expect_exit(04_shadow_feelers.classic_without_scene 04_shadow_feelers 2 "--classic .* needs --scene FILE.nff" --classic)
+rt_expect_exit(04_shadow_feelers.classic_offset 04_shadow_feelers 2 "--offset and --feelers do not apply"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --classic --offset none)
 rt_expect_exit(04_shadow_feelers.classic_spp 04_shadow_feelers 2 "--classic shoots one eye ray through each pixel corner: --spp must be 1, got 4"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --classic --spp 4)
 rt_expect_exit(05_soft_shadows.light_size_without_scene 05_soft_shadows 2 "--light-size sizes a scene file's lights" --light-size 0.2)
@@ -107,7 +120,9 @@ set(classic_counts_two_mirrors "eye_rays=9\neye_hits=9\nreflect_rays=36\nrefract
 set(classic_counts_back_face "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=9\nsecondary_hits=0\n")
 set(classic_counts_total_internal_reflection "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n")
 set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
-foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall)
+set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
+set(classic_counts_light_behind "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
+foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall refraction_pane light_behind)
   rt_expect_exit(04_shadow_feelers.classic_${scene} 04_shadow_feelers 0 "^${classic_counts_${scene}}"
     --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
     --out "${CMAKE_CURRENT_BINARY_DIR}/programs/04_shadow_feelers_classic_${scene}.png")

@@ -234,7 +234,7 @@ int main(int argc, char** argv)
             const ShapeScene scene = shape_scene(file.scene);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng&) {
-                    return ch02::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither), tests);
+                    return ch02::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), tests);
                 });
             });
         }

@@ -19,11 +19,13 @@ inline Triangle triangle_of(const NffTriangle& t)
     return {t.p[0], t.p[1], t.p[2]};
 }
 
-inline ShapeScene shape_scene(const NffScene& nff)
+// Each object in colour_of(its NFF material); chapter 02's, the material's fill colour.
+template <class ColourOf>
+ShapeScene shape_scene(const NffScene& nff, const ColourOf& colour_of)
 {
     ShapeScene scene;
     scene.background = nff.background;
-    const auto rgb = [&](int material) { return nff.materials[material].rgb; };
+    const auto rgb = [&](int material) { return colour_of(nff.materials[material]); };
     for (const NffSphere& s : nff.spheres)
         scene.add_sphere({s.center, s.radius}, rgb(s.material));
     for (const NffTriangle& t : nff.triangles)
@@ -31,6 +33,11 @@ inline ShapeScene shape_scene(const NffScene& nff)
     for (const NffCone& c : nff.cones)
         scene.add_cone(cone_of(c), rgb(c.material));
     return scene;
+}
+
+inline ShapeScene shape_scene(const NffScene& nff)
+{
+    return shape_scene(nff, [](const NffMaterial& m) { return m.rgb; });
 }
 
 }  // namespace rt

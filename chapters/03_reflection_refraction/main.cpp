@@ -177,8 +177,7 @@ int main(int argc, char** argv)
             const WhittedScene scene = whitted_scene(file.scene);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng&) {
-                    return ch03::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither),
-                                          o.trace);
+                    return ch03::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), o.trace);
                 });
             });
         }

@@ -23,27 +23,20 @@ inline Material whitted_material(const NffMaterial& m)
 inline WhittedScene whitted_scene(const NffScene& nff)
 {
     WhittedScene scene;
-    scene.shapes = shape_scene(nff);
-    const auto diffuse = [&](int material) { return nff.materials[material].kd * nff.materials[material].rgb; };
-    for (size_t k = 0; k < nff.spheres.size(); ++k) {
-        scene.shapes.sphere_albedo[k] = diffuse(nff.spheres[k].material);
-        scene.sphere_materials.push_back(whitted_material(nff.materials[nff.spheres[k].material]));
-    }
-    for (size_t k = 0; k < nff.triangles.size(); ++k) {
-        scene.shapes.triangle_albedo[k] = diffuse(nff.triangles[k].material);
-        scene.triangle_materials.push_back(whitted_material(nff.materials[nff.triangles[k].material]));
-    }
-    for (size_t k = 0; k < nff.cones.size(); ++k) {
-        scene.shapes.cone_albedo[k] = diffuse(nff.cones[k].material);
-        scene.cone_materials.push_back(whitted_material(nff.materials[nff.cones[k].material]));
-    }
+    scene.shapes = shape_scene(nff, [](const NffMaterial& m) { return m.kd * m.rgb; });
+    const auto material = [&](int index) { return whitted_material(nff.materials[index]); };
+    for (const NffSphere& s : nff.spheres)
+        scene.sphere_materials.push_back(material(s.material));
+    for (const NffTriangle& t : nff.triangles)
+        scene.triangle_materials.push_back(material(t.material));
+    for (const NffCone& c : nff.cones)
+        scene.cone_materials.push_back(material(c.material));
     scene.zenith = nff.background;
     scene.ambient = color(nff_ambient);
-    // The sun shines from where the first light stands, seen from the point the view looks at; a
-    // light at that very point shines from the eye.
+    // The sun shines from where the first light stands, seen from the point the view looks at, in
+    // that light's own colour: it stands alone, so no share of sqrt(L) lights (nff_light_colour).
     const NffLight& light = nff.lights.front();
-    const vec3 to_light = light.position - nff.view.at;
-    scene.sun.to_sun = glm::normalize(glm::length(to_light) > 0.0f ? to_light : nff.view.from - nff.view.at);
+    scene.sun.to_sun = glm::normalize(nff_light_offset(nff, light));
     scene.sun.colour = light.rgb;
     return scene;
 }

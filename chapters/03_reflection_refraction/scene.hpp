@@ -1,7 +1,8 @@
 // Chapter 03's scene: chapter 02's spheres and triangles (and cones, from scene files), each with
-// what Whitted's shading reads of it (a mirror's share, a glass's share and index of refraction, a floor's checkers), one
-// directional light, and an ambient term. That is all the figure needs (DESIGN.md: model only
-// what a scene requires): no point lights and no shadows yet, those are chapter 04's lesson.
+// what Whitted's shading reads of it (a mirror's share, a glass's share and index of refraction, a
+// floor's checkers), one directional light, and an ambient term. That is all the figure needs
+// (DESIGN.md: model only what a scene requires): no point lights and no shadows yet, those are
+// chapter 04's lesson.
 //
 // The geometry and the diffuse colours stay in chapter 02's ShapeScene, so chapter 02's
 // closest_hit answers every query; what chapter 03 adds sits in arrays beside them, index for
@@ -46,7 +47,7 @@ struct WhittedScene {
     Sun sun;
     color ambient{0.0f};  // Whitted's I_a: the light that reaches every surface from everywhere
 
-    // The material of the object a hit names (Hit::object: spheres first, then triangles).
+    // The material of the object a hit names (Hit::object: spheres first, then triangles, then cones).
     const Material& material(int object) const
     {
         if (shapes.object_is_sphere(object))

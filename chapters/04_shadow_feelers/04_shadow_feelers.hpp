@@ -6,8 +6,8 @@
 // README.md beside this file.
 //
 // Given code you call from your answers: hit_sphere and hit_triangle with lit_tests, and
-// hit_cone_counted (closest_hit.hpp: they count each intersection test) in 04.2, and light_blocked (feeler.hpp:
-// one counted shadow feeler, sent the way the settings say) in 04.4.
+// hit_cone_counted (closest_hit.hpp: they count each intersection test) in 04.2, and
+// light_blocked (feeler.hpp: one counted shadow feeler, sent the way the settings say) in 04.4.
 #pragma once
 
 #include "04_shadow_feelers/feeler_settings.hpp"

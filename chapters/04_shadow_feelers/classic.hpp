@@ -98,15 +98,16 @@ inline color trace(const ClassicScene& scene, const Ray& ray, int depth)
 
 // The image under the classic rules: the corners' grid of eye rays, one render of (w + 1) x (h + 1)
 // "pixels" whose centres are the image's pixel corners, then each pixel the mean of its four.
-inline Image render_classic(const RenderSettings& settings, const Camera& cam, const ClassicScene& scene, float hither)
+inline Image render_classic(const SceneRender& file, const ClassicScene& scene)
 {
+    const RenderSettings& settings = file.settings;
     RenderSettings grid = settings;
     grid.width = settings.width + 1;
     grid.height = settings.height + 1;
     grid.spp = 1;
     const Image corners = render(grid, [&](float x, float y, Rng&) {
         count(Counter::primary_rays);
-        return trace(scene, beyond_hither(primary_ray(cam, x - 0.5f, y - 0.5f), hither), 1);
+        return trace(scene, file.eye_ray(primary_ray(file.camera, x - 0.5f, y - 0.5f)), 1);
     });
     Image image(settings.width, settings.height);
     for (int j = 0; j < settings.height; ++j)

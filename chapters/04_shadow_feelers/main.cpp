@@ -284,21 +284,21 @@ int main(int argc, char** argv)
         if (o.classic && o.common.spp != 1)
             throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
                              std::to_string(o.common.spp));
+        if (o.classic && (cli.given("--offset") || cli.given("--feelers")))
+            throw InputError("--classic sends NFF's feelers, any-hit from the robust offset: --offset and --feelers "
+                             "do not apply");
         if (!o.scene.empty() && cli.given("--scale"))
             throw InputError("--scale scales the figure's scene; it does not apply to --scene");
         if (!o.scene.empty()) {
             const SceneRender file = load_scene_render(o.scene, o.common, cli);
-            const float hither = file.scene.view.hither;
             if (o.classic) {
                 const classic::ClassicScene scene = classic::classic_scene(file.scene);
-                return write_figure(
-                    o.common, [&] { return classic::render_classic(file.settings, file.camera, scene, hither); },
-                    print_classic_stats);
+                return write_figure(o.common, [&] { return classic::render_classic(file, scene); }, print_classic_stats);
             }
             const LitScene scene = lit_scene(file.scene);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng&) {
-                    return ch04::radiance(scene, beyond_hither(primary_ray(file.camera, x, y), hither), feelers);
+                    return ch04::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), feelers);
                 });
             });
         }

@@ -17,14 +17,13 @@ inline PhongMaterial phong_material(const NffMaterial& m)
     return {m.kd * m.rgb, color(m.ks), m.shine};
 }
 
-// The distance at which an NFF light shines with its own colour: from the light to the point the
-// view looks at (or, for a light at that point, from the eye). A point light falls off as 1 / d^2
-// (chapter 04's lesson) where NFF's does not fall off at all: so the scene's centre of interest
-// is lit as NFF lights it, nearer surfaces brighter and farther ones darker.
+// The distance at which an NFF light shines with its own colour: from the point the view looks at
+// (nff_light_offset). A point light falls off as 1 / d^2 (chapter 04's lesson) where NFF's does not
+// fall off at all: so the scene's centre of interest is lit as NFF lights it, nearer surfaces
+// brighter and farther ones darker.
 inline float nff_light_distance(const NffScene& nff, const NffLight& light)
 {
-    const float d = glm::length(light.position - nff.view.at);
-    return d > 0.0f ? d : glm::length(nff.view.from - nff.view.at);
+    return glm::length(nff_light_offset(nff, light));
 }
 
 inline LitScene lit_scene(const NffScene& nff)

@@ -167,8 +167,7 @@ int main(int argc, char** argv)
             const AreaLitScene scene = area_lit_scene(file.scene, o.light_size);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng& rng) {
-                    return radiance(scene, beyond_hither(primary_ray(file.camera, x, y), file.scene.view.hither),
-                                    sampling, rng);
+                    return radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), sampling, rng);
                 });
             });
         }

@@ -20,10 +20,9 @@ inline AreaLitScene area_lit_scene(const NffScene& nff, float light_size = nff_l
     AreaLitScene scene{lit_scene(nff), {}};
     scene.lit.lights.clear();
     for (const NffLight& light : nff.lights) {
-        const float d = nff_light_distance(nff, light);
-        const vec3 toward = nff.view.at - light.position;
-        const vec3 facing = glm::length(toward) > 0.0f ? toward : nff.view.at - nff.view.from;
-        AreaLight disc = disc_light(light.position, glm::normalize(facing), light_size * d, color(0.0f));
+        const vec3 offset = nff_light_offset(nff, light);
+        const float d = glm::length(offset);
+        AreaLight disc = disc_light(light.position, -offset / d, light_size * d, color(0.0f));
         // The power of chapter 04's point light for it (as_point_light turns it back): L_e A = I.
         disc.radiance = nff_light_colour(nff, light) * (d * d / light_area(disc));
         scene.area_lights.push_back(disc);

@@ -132,7 +132,7 @@ int main(int argc, char** argv)
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng& rng) {
                     return ch06::radiance(
-                        scene, beyond_hither(thin_lens_ray(file.camera, lens, x, y, rng), file.scene.view.hither));
+                        scene, file.eye_ray(thin_lens_ray(file.camera, lens, x, y, rng)));
                 });
             });
         }

@@ -131,8 +131,9 @@ double max_abs(const vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), s
 
 // The reference: in long double, the line's roots on the whole double cone (both nappes, any h) by
 // the textbook quadratic formula, each polished by Newton's method on F(t) = |x_perp|^2 - r(h)^2
-// evaluated at the point x itself, where nothing of size D^2 cancels: a different algorithm from
-// hit_cone's, and about 11 more bits.
+// evaluated at the point x itself, where nothing of size D^2 cancels, with about 11 more bits. It
+// shares hit_cone's model of the side (the same a, b, c from the same frame), so it checks the
+// roots, the precision and the choice of root, not the model: the analytic cases above check that.
 using ld = long double;
 using lvec3 = glm::vec<3, long double>;
 
@@ -197,6 +198,19 @@ struct Agreement {
 // double t's own error is about kappa 2^-53 for a root of condition kappa ~ (D / r)^2, under 2^-26
 // for D / r <= 1e4 (NUMERICS.md's distances) away from the outline. One more 2^-24 covers it.
 constexpr double t_bound = 0x1p-23;
+
+// What every run of random rays must show against the reference: no wrong answer, few rays within
+// rounding of an edge, t within t_bound, and at least `min_hit_fraction` of the rays hitting (so
+// that a test which always misses cannot pass).
+void check_agreement(const std::string& what, const Agreement& a, double min_hit_fraction)
+{
+    INFO(what << ": " << a.rays << " rays, " << a.hits << " hits, " << a.ambiguous << " ambiguous, " << a.wrong
+              << " wrong; max relative error of t " << a.max_rel_error << " (allowed " << t_bound << ")");
+    CHECK(a.wrong == 0);
+    CHECK(a.hits > min_hit_fraction * a.rays);
+    CHECK(a.ambiguous < a.rays / 1000);
+    CHECK(a.max_rel_error <= t_bound);
+}
 
 // Why 1e-9 of the ray's scale: hit_cone decides in double (about 1e-16 of the scale squared over the
 // root's separation), the reference in long double; rays closer than this to the outline, a disc or
@@ -344,12 +358,7 @@ TEST_CASE("random rays against random cones agree with a long double reference",
         const vec3 dir = glm::normalize(target - origin) * uniform(rng, 0.1f, 10.0f);
         compare({origin, dir}, cone, agreement);
     }
-    INFO(agreement.rays << " rays, " << agreement.hits << " hits, " << agreement.ambiguous << " ambiguous, "
-                        << agreement.wrong << " wrong; max relative error of t " << agreement.max_rel_error);
-    CHECK(agreement.wrong == 0);
-    CHECK(agreement.hits > agreement.rays / 4);
-    CHECK(agreement.ambiguous < agreement.rays / 1000);
-    CHECK(agreement.max_rel_error <= t_bound);
+    check_agreement("random rays at random cones", agreement, 0.25);
 }
 
 TEST_CASE("a cone 1e4 units away is still hit with an accurate t", "[common][cone]")
@@ -372,16 +381,10 @@ TEST_CASE("a cone 1e4 units away is still hit with an accurate t", "[common][con
         const point3 near = 0.5f * (far.base + far.apex) + 2.0f * random_unit(rng) * uniform(rng, 0, 1);
         compare({eye, glm::normalize(near - eye)}, far, around);
     }
-    INFO("aimed: " << aimed.hits << " of " << aimed.rays << " hit, max relative error of t "
-                   << aimed.max_rel_error);
-    INFO("around: " << around.hits << " hits, " << around.ambiguous << " ambiguous, " << around.wrong
-                    << " wrong of " << around.rays << ", max relative error of t " << around.max_rel_error);
+    INFO("aimed at the side facing the eye: " << aimed.hits << " of " << aimed.rays << " hit");
     CHECK(aimed.hits == aimed.rays);
-    CHECK(aimed.max_rel_error <= t_bound);
-    CHECK(around.wrong == 0);
-    CHECK(around.hits > around.rays / 10);
-    CHECK(around.ambiguous < around.rays / 1000);
-    CHECK(around.max_rel_error <= t_bound);
+    check_agreement("aimed at the side facing the eye", aimed, 0.999);
+    check_agreement("aimed within 2 units of the cone", around, 0.1);
 }
 
 TEST_CASE("the normal is unit, across the slant line and away from the axis", "[common][cone]")

@@ -296,6 +296,8 @@ TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong"
         {lit + "f 1 1 1 1 0 0 0.5 0\n",
          "t.nff:10: material: a transmitting material (T > 0) needs an index of refraction above 0, got '0'"},
         {lit + "f 1 1 1 -1 0 0 0 0\n", "t.nff:10: material: Kd must not be negative, got '-1'"},
+        {lit + "f 1 1 1 1.5 0 0 0 0\n", "t.nff:10: material: Kd must lie between 0 and 1, got '1.5'"},
+        {lit + "f 1 1 1 1 0.1e12 0 0 0\n", "t.nff:10: material: Ks must lie between 0 and 1, got '0.1e12'"},
         {lit + "f 1 -1 1 1 0 0 0 0\n", "t.nff:10: material: green must not be negative, got '-1'"},
         {lit + "b -1 0 0\n", "t.nff:10: background: red must not be negative, got '-1'"},
         {view_lines + "l 1 1 1 0.5\n" + f, "t.nff:9: light: green must be a number, got 'f' (too few numbers?)"},

@@ -62,13 +62,28 @@ TEST_CASE("an NFF view's angle spans the image's shorter side, edge to edge", "[
     view.angle_degrees = 40.0f;
     const float half = static_cast<float>(std::tan(20.0 * degrees));
     for (const auto& [w, h] : {std::pair{400, 400}, std::pair{800, 400}, std::pair{400, 800}}) {
-        const Camera cam = make_camera(nff_camera_spec(view, w, h));
+        const Camera cam = nff_camera(view, w, h);
         const float shorter_half = std::min(cam.r, cam.t);
         INFO("a " << w << " x " << h << " image with NFF angle 40: the window reaches " << cam.r << " across and "
                   << cam.t << " up at distance 1, expected tan(20 degrees) = " << half << " on the shorter side");
         CHECK(std::abs(shorter_half - half) <= 1e-6f * half);
         CHECK(std::abs(cam.r / cam.t - static_cast<float>(w) / static_cast<float>(h)) <= 1e-5f);
     }
+}
+
+TEST_CASE("an NFF view of 179.9 degrees across a 1 x 16384 image still makes a camera, its window finite", "[common]")
+{
+    NffView view;
+    view.from = {0, 0, 5};
+    view.at = {0, 0, 0};
+    view.angle_degrees = 179.9f;
+    const Camera cam = nff_camera(view, 1, 16384);
+    const double half = std::tan(0.5 * static_cast<double>(view.angle_degrees) * degrees);  // of the float 179.9
+    INFO("the window reaches " << cam.r << " across and " << cam.t << " up; expected " << half << " and "
+                               << half * 16384);
+    CHECK(std::abs(cam.r - half) <= 1e-6 * half);
+    CHECK(std::abs(cam.t - half * 16384) <= 1e-6 * half * 16384);
+    CHECK(std::isfinite(cam.t));
 }
 
 TEST_CASE("a scene file's image is its resolution, unless the command line gives a size", "[common]")
@@ -101,13 +116,25 @@ TEST_CASE("a scene file's image is its resolution, unless the command line gives
     std::filesystem::remove(path);
 }
 
-TEST_CASE("an eye ray starts on NFF's near plane, hither along it", "[common]")
+TEST_CASE("an eye ray starts on NFF's near plane, hither in front of the eye, whatever its slant", "[common]")
 {
-    const Ray eye{{1, 2, 3}, glm::normalize(vec3(1, -1, -2))};
-    const Ray r = beyond_hither(eye, 0.5f);
-    INFO("the eye " << show(eye) << " past hither 0.5: " << show(r));
-    CHECK(glm::length(r.origin - eye.at(0.5f)) <= 1e-6f);
-    CHECK(r.dir == eye.dir);
+    NffView view;
+    view.from = {1, 2, 3};
+    view.at = {2, 1, -4};
+    view.angle_degrees = 60.0f;
+    const Camera cam = nff_camera(view, 64, 48);
+    for (const vec3& toward : {-cam.w, glm::normalize(-cam.w + 0.5f * cam.u), glm::normalize(-cam.w - 0.4f * cam.u + 0.3f * cam.v)}) {
+        const Ray camera_ray{cam.eye, toward};
+        const Ray r = from_near_plane(camera_ray, cam, 0.5f);
+        const float depth = glm::dot(r.origin - cam.eye, -cam.w);
+        INFO("the camera " << show(camera_ray) << " from the near plane at 0.5: " << show(r) << ", at depth " << depth);
+        CHECK(std::abs(depth - 0.5f) <= 1e-6f);
+        CHECK(r.dir == camera_ray.dir);
+        CHECK(glm::length(glm::cross(r.origin - cam.eye, toward)) <= 1e-6f);  // still on the ray
+    }
+    // A lens point (chapter 06) beside the eye starts on the same plane.
+    const Ray lens_ray{cam.eye + 0.2f * cam.u, glm::normalize(-cam.w + 0.2f * cam.v)};
+    CHECK(std::abs(glm::dot(from_near_plane(lens_ray, cam, 2.0f).origin - cam.eye, -cam.w) - 2.0f) <= 1e-6f);
 }
 
 TEST_CASE("a scene file's lights: colour over sqrt(L), and in chapter 04 that colour arrives at the view's at", "[common]")

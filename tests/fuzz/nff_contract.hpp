@@ -50,8 +50,8 @@ inline std::string scene_broken(const NffScene& s)
         for (const float w : weights)
             if (!std::isfinite(w) || w < 0.0f)
                 return "a material has a negative or non-finite weight";
-        if (!non_negative(m.rgb) || m.t > 1.0f || (m.t > 0.0f && !(m.ior > 0.0f)))
-            return "a material's colour, T or ior is out of range";
+        if (!non_negative(m.rgb) || m.kd > 1.0f || m.ks > 1.0f || m.t > 1.0f || (m.t > 0.0f && !(m.ior > 0.0f)))
+            return "a material's colour, Kd, Ks, T or ior is out of range";
     }
     const auto bad_material = [&](int index) { return index < 0 || index >= static_cast<int>(s.materials.size()); };
     for (const NffSphere& sp : s.spheres)
