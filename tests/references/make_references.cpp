@@ -8,6 +8,7 @@
 #include "tests/ch04/picture.hpp"
 #include "tests/ch05/picture.hpp"
 #include "tests/ch06/picture.hpp"
+#include "tests/scenes/scene_pictures.hpp"
 
 #include <functional>
 #include <iostream>
@@ -17,7 +18,7 @@
 
 int main()
 {
-    const std::vector<std::pair<std::string, std::function<rt::Image()>>> pictures = {
+    std::vector<std::pair<std::string, std::function<rt::Image()>>> pictures = {
         {"01_ray_casting", rt::pictures::ch01},
         {"02_spheres_triangles", rt::pictures::ch02},
         {"03_reflection_refraction", rt::pictures::ch03},
@@ -25,6 +26,8 @@ int main()
         {"05_soft_shadows", [] { return rt::pictures::ch05(rt::pictures::ch05_reference_spp); }},
         {"06_depth_of_field", rt::pictures::ch06},
     };
+    for (const rt::pictures::ScenePicture& scene : rt::pictures::scene_pictures())
+        pictures.emplace_back(scene.name, scene.render);
     for (const auto& [name, render] : pictures) {
         const std::string path = std::string(RT_REFERENCES_DIR) + "/" + name + ".png";
         rt::write_png(path, render());
