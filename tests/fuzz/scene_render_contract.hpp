@@ -5,49 +5,21 @@
 // broke.
 #pragma once
 
-#include "02_spheres_triangles/figure.hpp"
-#include "02_spheres_triangles/nff_scene.hpp"
-#include "03_reflection_refraction/figure.hpp"
-#include "03_reflection_refraction/nff_scene.hpp"
-#include "04_shadow_feelers/classic.hpp"
-#include "04_shadow_feelers/figure.hpp"
-#include "common/scene_file.hpp"
+#include "tests/scenes/scene_renders.hpp"
 
 #include <string>
 
 namespace rt::scene_render_contract {
 
-constexpr int side = 3;
-
 inline std::string render_broken(const NffScene& nff)
 {
-    const SceneRender file{nff, nff_camera(nff.view, side, side), quiet_render(side, side)};
-    const auto eye = [&](float x, float y) { return file.eye_ray(primary_ray(file.camera, x, y)); };
-    const auto broken = [](const Image& image, const char* chapter) {
-        const int bad = count_non_finite(image);
-        return bad > 0 ? std::string(chapter) + ": " + std::to_string(bad) + " of 9 pixels are NaN or infinite"
-                       : std::string();
-    };
-    const ShapeScene shapes = shape_scene(nff);
-    std::string what = broken(render(file.settings, [&](float x, float y, Rng&) {
-                                  return ch02::radiance(shapes, eye(x, y), ShapeTests{});
-                              }),
-                              "chapter 02");
-    const WhittedScene whitted = whitted_scene(nff);
-    if (what.empty())
-        what = broken(render(file.settings, [&](float x, float y, Rng&) {
-                          return ch03::radiance(whitted, eye(x, y), TraceSettings{});
-                      }),
-                      "chapter 03");
-    const LitScene lit = lit_scene(nff);
-    if (what.empty())
-        what = broken(render(file.settings, [&](float x, float y, Rng&) {
-                          return ch04::radiance(lit, eye(x, y), FeelerSettings{});
-                      }),
-                      "chapter 04");
-    if (what.empty())
-        what = broken(classic::render_classic(file, classic::classic_scene(nff)), "chapter 04, --classic");
-    return what;
+    for (const scene_renders::Mode mode : scene_renders::modes) {
+        const Image image = scene_renders::render_as(mode, scene_renders::small(nff, 3));
+        if (const int bad = count_non_finite(image); bad > 0)
+            return "chapter " + std::string(scene_renders::name(mode)) + ": " + std::to_string(bad) +
+                   " of 9 pixels are NaN or infinite";
+    }
+    return "";
 }
 
 }  // namespace rt::scene_render_contract
