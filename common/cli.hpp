@@ -65,7 +65,7 @@ RenderSettings render_settings(const CommonOptions& options);
 // What every chapter program does without --sweep: renders its figure (timed), writes it to
 // options.out, and prints the --stats lines when asked (print_stats, or the printer given).
 // Returns the exit status: 0, or exit_kit_bug when a pixel came out NaN or infinite.
-using StatsPrinter = void (*)(std::ostream&, const Counts&, double);
+using StatsPrinter = std::function<void(std::ostream&, const Counts&, double)>;
 int write_figure(const CommonOptions& options, const std::function<Image()>& render,
                  StatsPrinter print = print_stats);
 

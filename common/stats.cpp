@@ -10,12 +10,6 @@ std::mutex totals_mutex;
 Counts totals{};
 }  // namespace
 
-Counts& local_counts()
-{
-    thread_local Counts counts{};
-    return counts;
-}
-
 void flush_counters()
 {
     Counts& mine = local_counts();

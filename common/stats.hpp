@@ -1,12 +1,16 @@
 // Counters (rays by kind, intersection tests) and a timer, for `--stats` and the trade tables.
 //
 // Each thread counts into its own thread_local block, with no atomics on the hot path, and adds it
-// to the global totals once, when its share of a render is done (flush_counters).
+// to the global totals once, when its share of a render is done (flush_counters). The block is an
+// inline variable defined here, so counting a test compiles to one increment of thread-local
+// memory, not a call: the acceleration chapters (07-10) measure times that a call per test would
+// distort.
 #pragma once
 
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <ostream>
 
 namespace rt {
@@ -22,6 +26,9 @@ enum class Counter {
     primary_hits,
     secondary_hits,
     shadow_blocked,
+    // Counted by the acceleration structures (chapters 07-10), which report them in their own
+    // --stats lines.
+    cells_visited,
     count_  // the number of counters, not a counter
 };
 
@@ -33,9 +40,12 @@ constexpr std::array<const char*, standard_counters> counter_names = {
 using Counts = std::array<std::uint64_t, static_cast<size_t>(Counter::count_)>;
 
 // This thread's running counts.
-Counts& local_counts();
+inline thread_local Counts thread_counts{};
+inline Counts& local_counts() { return thread_counts; }
 
-inline void count(Counter c, std::uint64_t n = 1) { local_counts()[static_cast<size_t>(c)] += n; }
+inline void count(Counter c, std::uint64_t n = 1) { thread_counts[static_cast<size_t>(c)] += n; }
+
+inline std::uint64_t counted(const Counts& counts, Counter c) { return counts[static_cast<size_t>(c)]; }
 
 // Adds this thread's counts to the totals and zeroes them.
 void flush_counters();

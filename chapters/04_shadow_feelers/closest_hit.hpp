@@ -1,5 +1,6 @@
 // The slides' QueryScene for chapter 04's scene (chapter 01 taught it; here it is given), and the
-// hit point a new ray can leave from.
+// hit point a new ray can leave from. The query goes to the scene's accelerator (scene_query.hpp):
+// brute force in chapters 04-06, a grid or a hierarchy from chapter 07 on, with the same answers.
 //
 // A ray that leaves a hit point (a shadow feeler here; reflected and refracted rays in chapter 03)
 // needs that point as exactly on the surface as float allows: the robust offset of EXERCISE 04.3
@@ -25,6 +26,12 @@ namespace rt {
 // what it should shadow.
 constexpr ShapeTests lit_tests{SphereTest::precise, TriangleTest::watertight};
 
+// The accelerator that answers the scene's queries: the scene's own (chapter 07 on), or brute force.
+inline const Accelerator& query_of(const LitScene& scene)
+{
+    return scene.accelerator ? *scene.accelerator : brute_force();
+}
+
 // The point of the sphere nearest p, which lies within rounding of the sphere (pbrt-v4's
 // reprojection, `Sphere::BasicIntersect`).
 inline point3 sphere_surface_point(const Sphere& sphere, const point3& p)
@@ -40,13 +47,6 @@ inline point3 triangle_surface_point(const Triangle& tri, const TriangleHit<floa
     return alpha * tri.a + hit.beta * tri.b + hit.gamma * tri.c;
 }
 
-// The triangle's unit face normal, (b - a) x (c - a) made unit: the geometric normal, the one a ray
-// leaving the surface must be offset along.
-inline vec3 face_normal(const Triangle& tri)
-{
-    return glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
-}
-
 // The nearest hit over all spheres, triangles and cones with t strictly inside `range`, its point on
 // the surface and its geometric normal (the sphere's and the cone's outward one, a triangle's face
 // normal). With `one_sided`, triangle k with one_sided[k] set is seen from its front only: a ray
@@ -54,41 +54,21 @@ inline vec3 face_normal(const Triangle& tri)
 inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Interval range,
                                       const std::vector<bool>* one_sided = nullptr)
 {
-    int nearest = -1;
-    TriangleHit<float> nearest_triangle{};
-    for (int k = 0; k < static_cast<int>(scene.spheres.size()); ++k)
-        if (const std::optional<float> t = hit_sphere(ray, scene.spheres[k], range, lit_tests.sphere)) {
-            range.max = *t;  // later objects count only when nearer
-            nearest = k;
-        }
-    for (int k = 0; k < static_cast<int>(scene.triangles.size()); ++k)
-        if (const std::optional<TriangleHit<float>> hit = hit_triangle(ray, scene.triangles[k], range, lit_tests.triangle)) {
-            if (one_sided && (*one_sided)[k] && glm::dot(face_normal(scene.triangles[k]), ray.dir) > 0.0f)
-                continue;  // its back
-            range.max = hit->t;
-            nearest = static_cast<int>(scene.spheres.size()) + k;
-            nearest_triangle = *hit;
-        }
-    const int first_cone = static_cast<int>(scene.spheres.size() + scene.triangles.size());
-    for (int k = 0; k < static_cast<int>(scene.cones.size()); ++k)
-        if (const std::optional<float> t = hit_cone_counted(ray, scene.cones[k], range)) {
-            range.max = *t;
-            nearest = first_cone + k;
-        }
-    if (nearest < 0)
+    ObjectHit h;
+    if (!query_of(scene).closest(ray, range, objects_of(scene, lit_tests, one_sided), h))
         return std::nullopt;
-    if (scene.object_is_sphere(nearest)) {
-        const Sphere& sphere = scene.spheres[nearest];
-        const point3 p = sphere_surface_point(sphere, ray.at(range.max));
-        return Hit{range.max, p, sphere_normal(sphere, p), nearest};
+    if (scene.object_is_sphere(h.object)) {
+        const Sphere& sphere = scene.spheres[h.object];
+        const point3 p = sphere_surface_point(sphere, ray.at(h.t));
+        return Hit{h.t, p, sphere_normal(sphere, p), h.object};
     }
-    if (scene.object_is_cone(nearest)) {
-        const Cone& cone = scene.cones[scene.cone_index(nearest)];
-        const point3 p = cone_surface_point(cone, ray.at(range.max));
-        return Hit{range.max, p, cone_normal(cone, p), nearest};
+    if (scene.object_is_cone(h.object)) {
+        const Cone& cone = scene.cones[scene.cone_index(h.object)];
+        const point3 p = cone_surface_point(cone, ray.at(h.t));
+        return Hit{h.t, p, cone_normal(cone, p), h.object};
     }
-    const Triangle& tri = scene.triangles[scene.triangle_index(nearest)];
-    return Hit{range.max, triangle_surface_point(tri, nearest_triangle), face_normal(tri), nearest};
+    const Triangle& tri = scene.triangles[scene.triangle_index(h.object)];
+    return Hit{h.t, triangle_surface_point(tri, TriangleHit<float>{h.t, h.beta, h.gamma}), face_normal(tri), h.object};
 }
 
 }  // namespace rt

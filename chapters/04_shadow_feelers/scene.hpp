@@ -15,6 +15,8 @@
 
 namespace rt {
 
+class Accelerator;  // 02_spheres_triangles/scene_query.hpp
+
 // What the local shading of EXERCISE 04.1 reads: the parameters of Phong's reflection model
 // (Phong 1975), which 04.1 evaluates with Blinn's halfway vector (Blinn 1977), as Shirley's
 // Fundamentals of Computer Graphics writes it. The ambient term reflects with `diffuse` too.
@@ -44,6 +46,11 @@ struct LitScene {
     std::vector<PointLight> lights;
     color ambient{0.0f};     // light arriving from everywhere, with no direction and no shadow
     color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
+
+    // What answers the scene's queries (closest_hit.hpp, and feeler.hpp's shadow feelers): none,
+    // brute force, in chapters 04-06; from chapter 07 on, the program's grid or hierarchy, built
+    // over these arrays (it does not own them, nor they it).
+    const Accelerator* accelerator = nullptr;
 
     bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
     int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }

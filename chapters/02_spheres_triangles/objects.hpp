@@ -1,0 +1,113 @@
+// The scene's objects as one numbered list, the seam every query goes through: spheres are
+// objects 0 .. S-1, triangles S .. S+T-1, cones after them (the order every chapter's scene
+// already numbers its hits in). An accelerator (chapters 07-10) never sees a sphere or a triangle:
+// it holds object numbers and asks this list two things, the object's bounds and whether a ray
+// hits it. A new kind of shape is one more case in `intersect` and in `bounds`, nothing else.
+//
+// The list is a view of the scene's own arrays (no copy), with the choice of tests a query asks
+// for: chapter 02's program picks among its sphere and triangle tests, chapter 04 on uses the
+// precise sphere and the watertight triangle, and the classic NFF rules see some triangles from
+// their front only.
+#pragma once
+
+#include "02_spheres_triangles/shape_tests.hpp"
+#include "common/bounds.hpp"
+
+#include <glm/common.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace rt {
+
+// What a query learns of the object it hits: t, which object, and for a triangle where on it
+// (the barycentric weights that chapter 02's normals and chapter 04's surface point need).
+struct ObjectHit {
+    float t = infinity;
+    int object = -1;
+    float beta = 0.0f, gamma = 0.0f;
+};
+
+// Why 1e-6: above the few float roundings (each 6e-8 of 1) in normalising the axis and squaring it.
+constexpr float cone_reach_margin = 1e-6f;
+
+struct Objects {
+    const Sphere* spheres = nullptr;
+    int sphere_count = 0;
+    const Triangle* triangles = nullptr;
+    int triangle_count = 0;
+    const Cone* cones = nullptr;
+    int cone_count = 0;
+    ShapeTests tests{};
+    const std::vector<bool>* one_sided = nullptr;  // per triangle: seen from its front only (or none)
+
+    int size() const { return sphere_count + triangle_count + cone_count; }
+
+    // One counted intersection test of object k: true, with `hit` filled in, when the ray hits it
+    // with t strictly inside `range` (and, for a one-sided triangle, from its front).
+    bool intersect(int k, const Ray& ray, Interval range, ObjectHit& hit) const
+    {
+        if (k < sphere_count) {
+            const std::optional<float> t = hit_sphere(ray, spheres[k], range, tests.sphere);
+            if (!t)
+                return false;
+            hit = {*t, k, 0.0f, 0.0f};
+            return true;
+        }
+        const int tri = k - sphere_count;
+        if (tri < triangle_count) {
+            const std::optional<TriangleHit<float>> h = hit_triangle(ray, triangles[tri], range, tests.triangle);
+            if (!h)
+                return false;
+            if (one_sided && (*one_sided)[tri] && glm::dot(face_normal(triangles[tri]), ray.dir) > 0.0f)
+                return false;  // its back
+            hit = {h->t, k, h->beta, h->gamma};
+            return true;
+        }
+        const std::optional<float> t = hit_cone_counted(ray, cones[tri - triangle_count], range);
+        if (!t)
+            return false;
+        hit = {*t, k, 0.0f, 0.0f};
+        return true;
+    }
+
+    // A box that holds all of object k, one float step generous (widened_one_ulp).
+    Bounds bounds(int k) const
+    {
+        Bounds b;
+        if (k < sphere_count) {
+            const vec3 r(spheres[k].radius);
+            b.grow(spheres[k].centre - r);
+            b.grow(spheres[k].centre + r);
+        } else if (k - sphere_count < triangle_count) {
+            const Triangle& t = triangles[k - sphere_count];
+            b.grow(t.a);
+            b.grow(t.b);
+            b.grow(t.c);
+        } else {
+            // Each end disc of radius r across the unit axis a reaches r sqrt(1 - a_i^2) along axis i.
+            // 1 - a_i^2 carries a few 1e-7 of rounding, which the square root magnifies near 0
+            // (an axis almost along i): cone_reach_margin, added first, keeps the box outside.
+            const Cone& c = cones[k - sphere_count - triangle_count];
+            const vec3 a = glm::normalize(c.apex - c.base);
+            const vec3 reach = glm::sqrt(glm::clamp(vec3(1.0f + cone_reach_margin) - a * a, vec3(0.0f), vec3(1.0f)));
+            b.grow(c.base - c.base_radius * reach);
+            b.grow(c.base + c.base_radius * reach);
+            b.grow(c.apex - c.apex_radius * reach);
+            b.grow(c.apex + c.apex_radius * reach);
+        }
+        return widened_one_ulp(b);
+    }
+};
+
+// The objects of any of the chapters' scenes (ShapeScene, LitScene: each has the three arrays).
+template <class Scene>
+Objects objects_of(const Scene& scene, ShapeTests tests, const std::vector<bool>* one_sided = nullptr)
+{
+    return {scene.spheres.data(),   static_cast<int>(scene.spheres.size()),
+            scene.triangles.data(), static_cast<int>(scene.triangles.size()),
+            scene.cones.data(),     static_cast<int>(scene.cones.size()),
+            tests,                  one_sided};
+}
+
+}  // namespace rt

@@ -1,0 +1,124 @@
+// An axis-aligned box (the bounds of an object, a grid cell, a tree node) and the ray/box slab
+// test every accelerator of chapters 07-10 enters its boxes with.
+//
+// The slab test (Kay and Kajiya 1986): the ray is inside the box where it is inside all three
+// slabs min_i <= p_i <= max_i, each one the t interval between its two planes,
+// t = (min_i - o_i) / d_i and t = (max_i - o_i) / d_i. It is made robust as Ize ("Robust BVH Ray
+// Traversal", JCGT 2013) and pbrt-v4 (`Bounds3::IntersectP`) make it:
+//   - t_far of each slab is multiplied by 1 + 2 gamma(3), gamma(n) = n u / (1 - n u) with
+//     u = 2^-24: the computed t_far can be up to that factor too small (two roundings and a
+//     division), and a box whose t_near and t_far are equal in exact arithmetic would otherwise be
+//     missed by a grazing ray: thin holes in a mesh;
+//   - a zero direction component (+0 or -0) gives an infinite 1 / d_i: the slab's two t are both
+//     +infinity or both -infinity when the origin lies outside that slab (a miss), and -inf and
+//     +inf when it lies inside (no limit), with IEEE arithmetic doing the work (Williams et al.,
+//     "An Efficient and Robust Ray-Box Intersection Algorithm", 2005);
+//   - an origin exactly on a face with d_i = 0 makes 0 * inf = NaN; the comparisons below are
+//     written so that a NaN leaves the interval unchanged: a ray that runs in the face's plane is
+//     inside that slab (the box is closed);
+//   - a ray with a NaN or infinite origin or direction never enters a box (finite_ray).
+#pragma once
+
+#include "common/interval.hpp"
+#include "common/ray.hpp"
+#include "common/vec.hpp"
+
+#include <glm/common.hpp>
+
+#include <cmath>
+#include <optional>
+
+namespace rt {
+
+struct Bounds {
+    point3 min{infinity};   // empty: min > max on every axis
+    point3 max{-infinity};
+
+    bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
+    vec3 extent() const { return empty() ? vec3(0.0f) : max - min; }
+    point3 centre() const { return 0.5f * (min + max); }
+
+    void grow(const point3& p)
+    {
+        min = glm::min(min, p);
+        max = glm::max(max, p);
+    }
+    void grow(const Bounds& b)
+    {
+        min = glm::min(min, b.min);
+        max = glm::max(max, b.max);
+    }
+
+    // Half the surface area: what the surface area heuristic (chapter 10) weighs a box by.
+    float half_area() const
+    {
+        const vec3 e = extent();
+        return e.x * e.y + e.y * e.z + e.z * e.x;
+    }
+};
+
+// The box one float step larger on every side: bounds computed in float (a sphere's c + r) may
+// round inward by half a step, which would let a ray hit the object but miss its box.
+inline Bounds widened_one_ulp(const Bounds& b)
+{
+    Bounds w;
+    for (int i = 0; i < 3; ++i) {
+        w.min[i] = std::nextafter(b.min[i], -infinity);
+        w.max[i] = std::nextafter(b.max[i], infinity);
+    }
+    return w;
+}
+
+inline bool finite_ray(const Ray& ray)
+{
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(ray.origin[i]) || !std::isfinite(ray.dir[i]))
+            return false;
+    return true;
+}
+
+// 1 + 2 gamma(3), gamma(n) = n u / (1 - n u), u = 2^-24 (float's unit roundoff): Ize 2013.
+constexpr float gamma_3 = 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
+constexpr float slab_far_widening = 1.0f + 2.0f * gamma_3;
+
+// What the slab test needs of a ray, computed once per ray: 1 / d_i is infinite, with d_i's sign,
+// for a zero component (-0 gives -infinity).
+struct RaySlabs {
+    point3 origin;
+    vec3 inv_dir;
+
+    explicit RaySlabs(const Ray& ray) : origin(ray.origin), inv_dir(1.0f / ray.dir) {}
+};
+
+// The part of `range` where the ray is inside the box, or nothing when the ray misses it (or only
+// touches it at an end of an open range). The ray must be finite: the accelerators check that
+// once per query (finite_ray); hit_bounds below checks it for you.
+inline std::optional<Interval> slab_interval(const Bounds& box, const RaySlabs& ray, Interval range)
+{
+    float t0 = range.min, t1 = range.max;
+    for (int i = 0; i < 3; ++i) {
+        float t_near = (box.min[i] - ray.origin[i]) * ray.inv_dir[i];
+        float t_far = (box.max[i] - ray.origin[i]) * ray.inv_dir[i];
+        if (t_near > t_far) {
+            const float swap = t_near;
+            t_near = t_far;
+            t_far = swap;
+        }
+        t_far *= slab_far_widening;
+        // Written so that a NaN (0 * inf: an origin on the face, d_i = 0) leaves t0 and t1 alone.
+        t0 = t_near > t0 ? t_near : t0;
+        t1 = t_far < t1 ? t_far : t1;
+        if (t0 > t1)
+            return std::nullopt;
+    }
+    return Interval{t0, t1};
+}
+
+inline std::optional<Interval> hit_bounds(const Bounds& box, const Ray& ray, Interval range)
+{
+    if (!finite_ray(ray) || box.empty() || !(range.min <= range.max))
+        return std::nullopt;
+    return slab_interval(box, RaySlabs(ray), range);
+}
+
+}  // namespace rt
