@@ -52,7 +52,8 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   add_executable(${chapter} "${CMAKE_SOURCE_DIR}/chapters/${chapter}/main.cpp")
   set_target_properties(${chapter} PROPERTIES EXCLUDE_FROM_ALL "${RT_GRADE}")
   rt_chapter_libraries(libs ${nn} ${program_track})
-  target_link_libraries(${chapter} PRIVATE ${libs})
+  # From chapter 07 on, the figures are the kit's generated scenes (common/scenes/nff_generators).
+  target_link_libraries(${chapter} PRIVATE ${libs} nff_generators)
   set(figure "${RT_FIGURES_DIR}/${chapter}.png")
   add_custom_command(OUTPUT "${figure}"
     COMMAND ${chapter} --out "${figure}" ${RT_FIGURE_ARGS_${chapter}}

@@ -9,14 +9,15 @@
 //     u = 2^-24: the computed t_far can be up to that factor too small (two roundings and a
 //     division), and a box whose t_near and t_far are equal in exact arithmetic would otherwise be
 //     missed by a grazing ray: thin holes in a mesh;
-//   - a zero direction component (+0 or -0) gives an infinite 1 / d_i: the slab's two t are both
-//     +infinity or both -infinity when the origin lies outside that slab (a miss), and -inf and
-//     +inf when it lies inside (no limit), with IEEE arithmetic doing the work (Williams et al.,
-//     "An Efficient and Robust Ray-Box Intersection Algorithm", 2005);
+//   - a zero direction component (+0 or -0, made +0) gives 1 / d_i = +infinity: the slab's two t
+//     are both +infinity or both -infinity when the origin lies outside that slab (a miss), and
+//     -inf and +inf when it lies inside (no limit), with IEEE arithmetic doing the work (Williams
+//     et al., "An Efficient and Robust Ray-Box Intersection Algorithm", 2005);
 //   - an origin exactly on a face with d_i = 0 makes 0 * inf = NaN; the comparisons below are
 //     written so that a NaN leaves the interval unchanged: a ray that runs in the face's plane is
 //     inside that slab (the box is closed);
-//   - a ray with a NaN or infinite origin or direction never enters a box (finite_ray).
+//   - a ray with a NaN or infinite origin or direction, or none at all (0, 0, 0), never enters a
+//     box (valid_ray).
 #pragma once
 
 #include "common/interval.hpp"
@@ -69,30 +70,33 @@ inline Bounds widened_one_ulp(const Bounds& b)
     return w;
 }
 
-inline bool finite_ray(const Ray& ray)
+// A ray an accelerator can follow: finite, with a direction. The others hit nothing.
+inline bool valid_ray(const Ray& ray)
 {
     for (int i = 0; i < 3; ++i)
         if (!std::isfinite(ray.origin[i]) || !std::isfinite(ray.dir[i]))
             return false;
-    return true;
+    return ray.dir != vec3(0.0f);
 }
 
 // 1 + 2 gamma(3), gamma(n) = n u / (1 - n u), u = 2^-24 (float's unit roundoff): Ize 2013.
 constexpr float gamma_3 = 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
 constexpr float slab_far_widening = 1.0f + 2.0f * gamma_3;
 
-// What the slab test needs of a ray, computed once per ray: 1 / d_i is infinite, with d_i's sign,
-// for a zero component (-0 gives -infinity).
+// What the slab test needs of a ray, computed once per ray: 1 / d_i, +infinity for a zero
+// component. A -0 is made +0 first (-0 + 0 is +0 in IEEE arithmetic): 1 / -0 = -infinity would
+// turn the NaN of an origin on the box's max face into a t_near of +infinity, and a ray lying in
+// that face would miss the box along -0 and hit it along +0.
 struct RaySlabs {
     point3 origin;
     vec3 inv_dir;
 
-    explicit RaySlabs(const Ray& ray) : origin(ray.origin), inv_dir(1.0f / ray.dir) {}
+    explicit RaySlabs(const Ray& ray) : origin(ray.origin), inv_dir(1.0f / (ray.dir + vec3(0.0f))) {}
 };
 
 // The part of `range` where the ray is inside the box, or nothing when the ray misses it (or only
 // touches it at an end of an open range). The ray must be finite: the accelerators check that
-// once per query (finite_ray); hit_bounds below checks it for you.
+// once per query (valid_ray); hit_bounds below checks it for you.
 inline std::optional<Interval> slab_interval(const Bounds& box, const RaySlabs& ray, Interval range)
 {
     float t0 = range.min, t1 = range.max;
@@ -116,7 +120,7 @@ inline std::optional<Interval> slab_interval(const Bounds& box, const RaySlabs& 
 
 inline std::optional<Interval> hit_bounds(const Bounds& box, const Ray& ray, Interval range)
 {
-    if (!finite_ray(ray) || box.empty() || !(range.min <= range.max))
+    if (!valid_ray(ray) || box.empty() || !(range.min <= range.max))
         return std::nullopt;
     return slab_interval(box, RaySlabs(ray), range);
 }

@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 
 namespace rt {
@@ -40,6 +41,13 @@ Ray from_near_plane(const Ray& ray, const Camera& cam, float hither)
     // The ray climbs dir.(-w) of depth per unit of t; a camera ray always points in front.
     const float depth_rate = glm::dot(ray.dir, -cam.w);
     return depth_rate > 0.0f ? Ray{ray.at(hither / depth_rate), ray.dir} : ray;
+}
+
+SceneRender scene_render(NffScene scene, const RenderSettings& settings)
+{
+    SceneRender r{std::move(scene), {}, settings};
+    r.camera = nff_camera(r.scene.view, settings.width, settings.height);
+    return r;
 }
 
 SceneRender load_scene_render(const std::string& path, const CommonOptions& options, const CommandLine& cli)

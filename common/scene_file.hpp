@@ -46,6 +46,9 @@ struct SceneRender {
     Ray eye_ray(const Ray& camera_ray) const { return from_near_plane(camera_ray, camera, scene.view.hither); }
 };
 
+// A scene already in memory (a generated one) at the settings' size, with the camera of its view.
+SceneRender scene_render(NffScene scene, const RenderSettings& settings);
+
 // Reads the file (InputError "FILE:LINE: what is wrong" on bad input, as read_nff does).
 SceneRender load_scene_render(const std::string& path, const CommonOptions& options, const CommandLine& cli);
 

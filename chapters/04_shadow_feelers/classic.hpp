@@ -24,6 +24,7 @@
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "04_shadow_feelers/feeler.hpp"
 #include "04_shadow_feelers/nff_scene.hpp"
+#include "common/heatmap.hpp"
 #include "common/render.hpp"
 #include "common/scene_file.hpp"
 
@@ -98,23 +99,38 @@ inline color trace(const ClassicScene& scene, const Ray& ray, int depth)
 
 // The image under the classic rules: the corners' grid of eye rays, one render of (w + 1) x (h + 1)
 // "pixels" whose centres are the image's pixel corners, then each pixel the mean of its four.
-inline Image render_classic(const SceneRender& file, const ClassicScene& scene)
+// With `corner_cost` (chapter 07 on: a heat map), also what each corner's ray cost, on a map of
+// (w + 1) x (h + 1) whose counter the caller chose (pixel_cost_of_corners averages it per pixel).
+inline Image render_classic(const SceneRender& file, const ClassicScene& scene, CostMap* corner_cost = nullptr)
 {
     const RenderSettings& settings = file.settings;
     RenderSettings grid = settings;
     grid.width = settings.width + 1;
     grid.height = settings.height + 1;
     grid.spp = 1;
-    const Image corners = render(grid, [&](float x, float y, Rng&) {
+    const auto corner = [&](float x, float y, Rng&) {
         count(Counter::primary_rays);
         return trace(scene, file.eye_ray(primary_ray(file.camera, x - 0.5f, y - 0.5f)), 1);
-    });
+    };
+    const Image corners = corner_cost ? render(grid, with_cost(*corner_cost, corner)) : render(grid, corner);
     Image image(settings.width, settings.height);
     for (int j = 0; j < settings.height; ++j)
         for (int i = 0; i < settings.width; ++i)
             image.at(i, j) = 0.25f * (corners.at(i, j) + corners.at(i + 1, j) + corners.at(i, j + 1) +
                                       corners.at(i + 1, j + 1));
     return image;
+}
+
+// A map of the corners' costs as the pixels' costs: the mean of each pixel's four corners.
+inline CostMap pixel_cost_of_corners(const CostMap& corners)
+{
+    CostMap pixels(corners.width - 1, corners.height - 1, corners.counter);
+    const auto at = [&](int i, int j) { return corners.cost[static_cast<size_t>(j) * corners.width + i]; };
+    for (int j = 0; j < pixels.height; ++j)
+        for (int i = 0; i < pixels.width; ++i)
+            pixels.cost[static_cast<size_t>(j) * pixels.width + i] =
+                (at(i, j) + at(i + 1, j) + at(i, j + 1) + at(i + 1, j + 1) + 2) / 4;
+    return pixels;
 }
 
 }  // namespace rt::classic

@@ -1,10 +1,13 @@
 #include "common/scenes/nff_generators.hpp"
 
+#include "common/random.hpp"
 #include "common/vec.hpp"
 
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <utility>
+#include <vector>
 
 namespace rt {
 
@@ -184,6 +187,49 @@ void branch(NffWriter& w, const dvec3& base, const dvec3& direction, double leng
     }
 }
 
+// --- Mountain ---
+
+// Why 0.5: each level of the midpoint displacement halves the random offsets, as the cells halve:
+// a surface whose roughness looks alike at every scale (fractal dimension about 2.5; Fournier,
+// Fussell and Carpenter 1982, "Computer Rendering of Stochastic Models").
+constexpr double mountain_roughness = 0.5;
+constexpr std::uint64_t mountain_seed = 1982;
+constexpr double mountain_peak = 1.4;  // the centre's rise above the corners, before the offsets
+
+// Heights on a (2^depth + 1)^2 grid over [-1, 1]^2 by the diamond-square midpoint displacement,
+// from a seeded stream so the mountain is the same on every machine.
+std::vector<double> mountain_heights(int depth)
+{
+    const int n = (1 << depth) + 1;
+    std::vector<double> h(static_cast<size_t>(n) * n, 0.0);
+    const auto at = [&](int i, int j) -> double& { return h[static_cast<size_t>(j) * n + i]; };
+    Rng rng(mountain_seed, 0);
+    const auto offset = [&](double amplitude) { return amplitude * (2.0 * rng.next_float() - 1.0); };
+    at(n / 2, n / 2) = 0.0;
+    double amplitude = 0.8;
+    for (int step = n - 1; step > 1; step /= 2, amplitude *= mountain_roughness) {
+        const int half = step / 2;
+        // Diamond: each square's centre from its four corners.
+        for (int j = half; j < n; j += step)
+            for (int i = half; i < n; i += step)
+                at(i, j) = 0.25 * (at(i - half, j - half) + at(i + half, j - half) + at(i - half, j + half) +
+                                   at(i + half, j + half)) + offset(amplitude) + (step == n - 1 ? mountain_peak : 0.0);
+        // Square: each edge's midpoint from its (three or four) neighbours.
+        for (int j = 0; j < n; j += half)
+            for (int i = (j / half) % 2 == 0 ? half : 0; i < n; i += step) {
+                double sum = 0.0;
+                int count = 0;
+                for (const auto& [di, dj] : {std::pair{-half, 0}, {half, 0}, {0, -half}, {0, half}})
+                    if (i + di >= 0 && i + di < n && j + dj >= 0 && j + dj < n) {
+                        sum += at(i + di, j + dj);
+                        ++count;
+                    }
+                at(i, j) = sum / count + offset(amplitude);
+            }
+    }
+    return h;
+}
+
 // The lights and view every generated scene shares, framing an object `size` across whose base
 // stands at the origin.
 void stage(NffWriter& w, double size, double height)
@@ -246,13 +292,41 @@ void write_tree(std::ostream& out, int depth)
         w.sphere(leaf.center, leaf.radius);
 }
 
+void write_mountain(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("fractal mountain, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    const int n = (1 << depth) + 1;
+    const std::vector<double> h = mountain_heights(depth);
+    const double size = 4.0;  // the terrain spans [-2, 2] in x and z
+    const auto vertex = [&](int i, int j) {
+        return dvec3(size * (static_cast<double>(i) / (n - 1) - 0.5), h[static_cast<size_t>(j) * n + i],
+                     size * (static_cast<double>(j) / (n - 1) - 0.5));
+    };
+    stage(w, 1.7, 1.0);
+    w.material(dvec3(0.55, 0.5, 0.42), 0.9, 0.05, 4.0);
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i + 1 < n; ++i) {
+            // Two triangles per square, counterclockwise seen from above.
+            w.polygon({vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)});
+            w.polygon({vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)});
+        }
+    // Four balls resting above the slopes, as SPD's mount has.
+    w.material(dvec3(0.9, 0.3, 0.25), 0.6, 0.4, 60.0);
+    const dvec3 balls[4] = {{-1.0, 1.5, 0.8}, {0.9, 1.4, 0.9}, {0.4, 1.9, -0.7}, {-0.6, 2.0, -1.0}};
+    for (const dvec3& c : balls)
+        w.sphere(c, 0.28);
+}
+
 const std::vector<NffGenerator>& nff_generators()
 {
-    // Depth limits: 597871 spheres, 262144 triangles, 88573 cones; each file tens of megabytes.
+    // Depth limits: 597871 spheres, 262144 triangles, 88573 cones, 524288 triangles; each file tens of
+    // megabytes.
     static const std::vector<NffGenerator> generators = {
         {"sphereflake", "a sphere with nine smaller spheres on it, recursively (SPD's balls)", 3, 6, write_sphereflake},
         {"pyramid", "a tetrahedron of four half-size tetrahedra, recursively (SPD's tetra)", 4, 8, write_pyramid},
         {"tree", "a trunk branching into three, recursively: cones, joints and leaves", 5, 10, write_tree},
+        {"mountain", "a fractal terrain of 2 x 4^depth triangles with four balls (SPD's mount)", 6, 9, write_mountain},
     };
     return generators;
 }

@@ -32,6 +32,11 @@ void write_pyramid(std::ostream& out, int depth);
 // (3^(depth+1) - 1) / 2 cones and as many joint spheres, 3^depth leaves, above a square floor.
 void write_tree(std::ostream& out, int depth);
 
+// A fractal terrain by midpoint displacement (diamond-square), 2 x 4^depth triangles, with four
+// balls above it, after SPD's "mount" (whose mountain is a fractal too); seeded, so the same
+// everywhere.
+void write_mountain(std::ostream& out, int depth);
+
 // The generators above, for the program and the tests.
 const std::vector<NffGenerator>& nff_generators();
 

@@ -8,6 +8,7 @@
 #include "tests/ch04/picture.hpp"
 #include "tests/ch05/picture.hpp"
 #include "tests/ch06/picture.hpp"
+#include "tests/ch07/picture.hpp"
 #include "tests/scenes/scene_pictures.hpp"
 
 #include <functional>
@@ -25,6 +26,7 @@ int main()
         {"04_shadow_feelers", rt::pictures::ch04},
         {"05_soft_shadows", [] { return rt::pictures::ch05(rt::pictures::ch05_reference_spp); }},
         {"06_depth_of_field", rt::pictures::ch06},
+        {"07_uniform_grid", rt::pictures::ch07},
     };
     for (const rt::pictures::ScenePicture& scene : rt::pictures::scene_pictures())
         pictures.emplace_back(scene.name, scene.render);

@@ -1,0 +1,78 @@
+// Chapter 07's figure: a scene too large for brute force, rendered through the grid with chapter
+// 04's shading and shadow feelers, beside a heat map of what each pixel cost.
+//
+// The scene is the kit's fractal mountain (nff_generate mountain --depth 7: 32768 triangles and
+// four balls), generated in memory: brute force tests all 32772 objects for every ray; the grid
+// tests a few dozen, most of them on the slopes the ray actually passes.
+#pragma once
+
+#include "04_shadow_feelers/figure.hpp"
+#include "04_shadow_feelers/nff_scene.hpp"
+#include "07_uniform_grid/grid.hpp"
+#include "common/heatmap.hpp"
+#include "common/nff.hpp"
+#include "common/scene_file.hpp"
+#include "common/scenes/nff_generators.hpp"
+
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace rt::ch07 {
+
+constexpr int figure_mountain_depth = 7;
+
+// Why 2 cells per object: the lesson's table, on this scene, puts the fastest render between 1
+// and 4 cells per object, with the grid's bytes growing with lambda past that.
+constexpr float default_lambda = 2.0f;
+
+// One of the kit's generated scenes, read back from the NFF text its generator writes.
+inline NffScene generated_scene(void (*write)(std::ostream&, int), int depth, const std::string& name)
+{
+    std::stringstream text;
+    write(text, depth);
+    return parse_nff(text, name);
+}
+
+inline NffScene figure_scene() { return generated_scene(write_mountain, figure_mountain_depth, "mountain, depth 7"); }
+
+// A scene's accelerator by name: none (brute force) or the grid; the program's --accel.
+inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const LitScene& scene, float lambda)
+{
+    if (name == "brute")
+        return nullptr;
+    if (name == "grid")
+        return std::make_unique<UniformGrid>(objects_of(scene, lit_tests), lambda);
+    throw InputError("--accel takes brute or grid, got '" + name + "'");
+}
+
+// Chapter 04's render of a scene file (its radiance: shading with feelers), through whatever
+// accelerator the scene holds; with `cost`, also what each pixel cost.
+inline Image render_lit(const SceneRender& file, const LitScene& scene, const FeelerSettings& feelers,
+                        CostMap* cost = nullptr)
+{
+    const auto radiance = [&](float x, float y, Rng&) {
+        return ch04::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), feelers);
+    };
+    return cost ? render(file.settings, with_cost(*cost, radiance)) : render(file.settings, radiance);
+}
+
+// The figure's scene through the grid, lambda cells per object; with `cost`, what each pixel cost.
+inline Image render_through_grid(const RenderSettings& settings, float lambda = default_lambda, CostMap* cost = nullptr)
+{
+    const SceneRender file = scene_render(figure_scene(), settings);
+    LitScene scene = lit_scene(file.scene);
+    const UniformGrid grid(objects_of(scene, lit_tests), lambda);
+    scene.accelerator = &grid;
+    return render_lit(file, scene, FeelerSettings{}, cost);
+}
+
+// The figure: the render, and beside it the heat map of intersection tests per pixel.
+inline Image render_figure(const RenderSettings& settings, float lambda = default_lambda)
+{
+    CostMap cost(settings.width, settings.height, Counter::intersection_tests);
+    const Image image = render_through_grid(settings, lambda, &cost);
+    return side_by_side(image, heat_image(cost, "intersection tests per pixel"));
+}
+
+}  // namespace rt::ch07

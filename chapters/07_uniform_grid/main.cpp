@@ -1,0 +1,303 @@
+// Chapter 07's program: renders the figure (the fractal mountain through the uniform grid, beside
+// its heat map) or any NFF scene (--scene) with chapter 04's shading and shadow feelers, or by the
+// classic NFF rules (--classic), through brute force or the grid (--accel); --heatmap writes what
+// each pixel cost. --sweep measures the trade: the grid's density lambda against build time,
+// bytes, tests, cells and render time, and brute force against the grid as the scene grows.
+#include "04_shadow_feelers/classic.hpp"
+#include "07_uniform_grid/figure.hpp"
+#include "common/cli.hpp"
+#include "common/png.hpp"
+#include "common/scene_file.hpp"
+#include "common/trade.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    std::string scene;
+    bool classic = false;
+    std::string accel = "grid";
+    float lambda = ch07::default_lambda;
+    std::string heatmap;
+    std::string heat_of = "tests";
+    bool sweep = false;
+    int repeat = 5;
+    std::string csv = "07_uniform_grid.csv";
+};
+
+Counter heat_counter(const std::string& name)
+{
+    if (name == "tests")
+        return Counter::intersection_tests;
+    if (name == "cells")
+        return Counter::cells_visited;
+    throw InputError("--heat-of takes tests or cells, got '" + name + "'");
+}
+
+std::string heat_caption(Counter c)
+{
+    return c == Counter::cells_visited ? "cells visited per pixel" : "intersection tests per pixel";
+}
+
+// The --stats lines of the structure, after the render's own.
+void print_structure_stats(std::ostream& out, const std::string& accel, int objects, const UniformGrid* grid,
+                           const Counts& counts)
+{
+    out << "accel=" << accel << '\n' << "objects=" << objects << '\n';
+    out << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n';
+    if (!grid)
+        return;
+    const GridStats& s = grid->stats();
+    out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+        << "grid_cells=" << s.cells << '\n'
+        << "grid_empty_cells=" << s.empty_cells << '\n'
+        << "grid_references=" << s.references << '\n'
+        << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
+        << "grid_bytes=" << s.bytes << '\n'
+        << "build_seconds=" << s.build_seconds << '\n';
+}
+
+int render_program(const Options& o, const CommandLine& cli)
+{
+    const Counter counter = heat_counter(o.heat_of);
+    const bool figure = o.scene.empty();
+    const SceneRender file = figure ? scene_render(ch07::figure_scene(), render_settings(o.common))
+                                    : load_scene_render(o.scene, o.common, cli);
+    const int width = file.settings.width, height = file.settings.height;
+    if (o.classic) {
+        classic::ClassicScene scene = classic::classic_scene(file.scene);
+        const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene.lit, o.lambda);
+        scene.lit.accelerator = accel.get();
+        const int objects = objects_of(scene.lit, lit_tests).size();
+        CostMap corners(width + 1, height + 1, counter);
+        const auto print = [&](std::ostream& out, const Counts& counts, double seconds) {
+            print_classic_stats(out, counts, seconds);
+            print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel.get()), counts);
+        };
+        return write_figure(o.common, [&] {
+            const Image image = classic::render_classic(file, scene, o.heatmap.empty() ? nullptr : &corners);
+            if (!o.heatmap.empty())
+                write_png(o.heatmap, heat_image(classic::pixel_cost_of_corners(corners), heat_caption(counter)));
+            return image;
+        }, print);
+    }
+    LitScene scene = lit_scene(file.scene);
+    const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene, o.lambda);
+    scene.accelerator = accel.get();
+    const int objects = objects_of(scene, lit_tests).size();
+    const auto print = [&](std::ostream& out, const Counts& counts, double seconds) {
+        print_stats(out, counts, seconds);
+        print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel.get()), counts);
+    };
+    return write_figure(o.common, [&] {
+        CostMap cost(width, height, counter);
+        const Image image = ch07::render_lit(file, scene, FeelerSettings{}, &cost);
+        const Image heat = heat_image(cost, heat_caption(counter));
+        if (!o.heatmap.empty())
+            write_png(o.heatmap, heat);
+        // The figure is the render with its heat map; a scene file is the render alone.
+        return figure ? side_by_side(image, heat) : image;
+    }, print);
+}
+
+// --- The trade ---
+
+struct Measured {
+    int objects = 0;
+    double build_ms = 0.0, render_ms = 0.0;
+    std::size_t bytes = 0;
+    GridStats grid;
+    double tests_per_ray = 0.0, cells_per_ray = 0.0;
+    std::uint64_t rays = 0;
+    std::vector<std::uint8_t> pixels;  // 8-bit sRGB, to compare with brute force's
+    int runs = 0;
+};
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// One structure on one scene: its build (median of `runs`), one counted render, and the render's
+// median time over `runs` more.
+Measured measure(const NffScene& nff, const std::string& accel, float lambda, const RenderSettings& settings, int runs)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    Measured m;
+    m.objects = objects_of(scene, lit_tests).size();
+    m.runs = runs;
+    std::unique_ptr<Accelerator> structure;
+    std::vector<double> builds;
+    for (int r = 0; r < (accel == "brute" ? 1 : runs); ++r) {
+        const Timer timer;
+        structure = ch07::make_accelerator(accel, scene, lambda);
+        builds.push_back(1e3 * timer.seconds());
+    }
+    m.build_ms = accel == "brute" ? 0.0 : median(builds);
+    scene.accelerator = structure.get();
+    if (const auto* grid = dynamic_cast<const UniformGrid*>(structure.get())) {
+        m.grid = grid->stats();
+        m.bytes = grid->bytes();
+    }
+    reset_counters();
+    m.pixels = to_srgb8(ch07::render_lit(file, scene, FeelerSettings{}));
+    const Counts counts = total_counts();
+    m.rays = total_rays(counts);
+    m.tests_per_ray = static_cast<double>(counted(counts, Counter::intersection_tests)) / static_cast<double>(m.rays);
+    m.cells_per_ray = static_cast<double>(counted(counts, Counter::cells_visited)) / static_cast<double>(m.rays);
+    std::vector<double> times;
+    for (int r = 0; r < runs; ++r) {
+        const Timer timer;
+        ch07::render_lit(file, scene, FeelerSettings{});
+        times.push_back(1e3 * timer.seconds());
+    }
+    m.render_ms = median(times);
+    return m;
+}
+
+std::ofstream open_csv(const std::string& path, const std::string& header)
+{
+    std::ofstream out(path);
+    if (!out)
+        throw InputError("cannot write the CSV file '" + path + "'");
+    out << header << '\n';
+    return out;
+}
+
+// The density lambda against the grid's cost, on the figure's scene.
+void sweep_lambda(const Options& o, const RenderSettings& settings)
+{
+    const NffScene nff = ch07::figure_scene();
+    std::ofstream csv = open_csv(o.csv, "scene,objects,lambda,resolution,cells,empty_cells_percent,references_per_object,"
+                                        "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms");
+    std::cout << "\nlambda (cells per object) on " << nff.name << ", " << settings.width << "x" << settings.height
+              << ", medians of " << o.repeat << " runs\n\n"
+              << "| lambda | resolution | empty cells | refs/object | MB | build ms | tests/ray | cells/ray | render ms |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n";
+    for (const float lambda : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f, 32.0f}) {
+        const Measured m = measure(nff, "grid", lambda, settings, o.repeat);
+        std::ostringstream res;
+        res << m.grid.resolution.x << 'x' << m.grid.resolution.y << 'x' << m.grid.resolution.z;
+        const double empty = 100.0 * static_cast<double>(m.grid.empty_cells) / static_cast<double>(m.grid.cells);
+        const double refs = static_cast<double>(m.grid.references) / m.objects;
+        std::cout << std::fixed << "| " << std::setprecision(3) << lambda << " | " << res.str() << " | "
+                  << std::setprecision(0) << empty << "% | " << std::setprecision(2) << refs << " | "
+                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1) << m.build_ms << " | "
+                  << m.tests_per_ray << " | " << m.cells_per_ray << " | " << m.render_ms << " |\n";
+        csv << '"' << nff.name << "\"," << m.objects << ',' << lambda << ',' << res.str() << ',' << m.grid.cells << ','
+            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms << ',' << m.tests_per_ray << ','
+            << m.cells_per_ray << ',' << m.render_ms << '\n';
+    }
+}
+
+// Brute force against the grid on one scene, same rays: one table row each, and the images must
+// be the same byte for byte (and the ray counts equal), or the kit has a bug.
+void compare_on(const NffScene& nff, const Options& o, const RenderSettings& settings, std::ofstream& csv)
+{
+    // Brute force on the largest scenes takes minutes a render: one run there, said in the table.
+    const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.repeat;
+    const Measured brute = measure(nff, "brute", o.lambda, settings, brute_runs);
+    const Measured grid = measure(nff, "grid", o.lambda, settings, o.repeat);
+    if (brute.pixels != grid.pixels || brute.rays != grid.rays)
+        throw std::runtime_error("the grid's image or ray count differs from brute force's on " + nff.name +
+                                 ": a bug of the kit");
+    for (const auto& [name, m] : {std::pair<const char*, const Measured&>{"brute", brute}, {"grid", grid}}) {
+        std::cout << std::fixed << "| " << nff.name << " | " << m.objects << " | " << name << " | "
+                  << std::setprecision(1) << m.tests_per_ray << " | " << m.cells_per_ray << " | " << std::setprecision(1)
+                  << m.render_ms << " | " << m.build_ms << " | " << std::setprecision(2)
+                  << static_cast<double>(m.bytes) / 1e6 << " | " << m.runs << " | "
+                  << std::setprecision(0) << brute.render_ms / m.render_ms << "x |\n";
+        csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << m.tests_per_ray << ',' << m.cells_per_ray
+            << ',' << m.render_ms << ',' << m.build_ms << ',' << m.bytes << ',' << m.runs << ','
+            << brute.render_ms / m.render_ms << '\n';
+    }
+}
+
+const char* comparison_header = "scene,objects,structure,tests_per_ray,cells_per_ray,render_ms,build_ms,bytes,runs,speedup";
+
+void print_comparison_heading(const std::string& what, const RenderSettings& settings, int repeat)
+{
+    std::cout << "\n" << what << ", " << settings.width << "x" << settings.height << ", images identical to brute force; "
+              << "medians of " << repeat << " runs (runs column)\n\n"
+              << "| scene | objects | structure | tests/ray | cells/ray | render ms | build ms | MB | runs | speedup |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|\n";
+}
+
+void sweep(const Options& o, const CommandLine& cli)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.show_progress = false;
+    if (!cli.given("--width"))
+        settings.width = 64;
+    if (!cli.given("--height"))
+        settings.height = 36;
+    std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
+    std::ofstream n_csv = open_csv(csv_beside(o.csv, "_n"), comparison_header);
+    print_comparison_heading("brute force against the grid as the mountain grows (lambda " + std::to_string(o.lambda) + ")",
+                             settings, o.repeat);
+    for (int depth = 1; depth <= 8; ++depth)
+        compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv);
+    std::ofstream scenes_csv = open_csv(csv_beside(o.csv, "_scenes"), comparison_header);
+    print_comparison_heading("the kit's generated scenes near 10k objects", settings, o.repeat);
+    compare_on(ch07::generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv);
+    compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv);
+    compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv);
+    compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv);
+    RenderSettings lambda_settings = settings;
+    if (!cli.given("--width"))
+        lambda_settings.width = 320;
+    if (!cli.given("--height"))
+        lambda_settings.height = 180;
+    sweep_lambda(o, lambda_settings);
+    std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << " and " << csv_beside(o.csv, "_scenes") << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("07_uniform_grid", [&] {
+        Options o;
+        o.common.out = "07_uniform_grid.png";
+        CommandLine cli("07_uniform_grid", "The uniform grid: a scene's rays walk its cells, testing only the objects there.");
+        add_common_options(cli, o.common);
+        add_scene_option(cli, o.scene);
+        cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
+        cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
+        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1000.0f);
+        cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
+        cli.option("--heat-of", o.heat_of, "what the heat map counts: tests (intersection tests) or cells (visited)");
+        cli.flag("--sweep", o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade");
+        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        heat_counter(o.heat_of);
+        if (o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
+        if (o.accel == "brute" && cli.given("--lambda"))
+            throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
+        check_scene_without_sweep(o.scene, o.sweep);
+        if (o.classic && o.scene.empty())
+            throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
+        if (o.classic && o.common.spp != 1)
+            throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
+                             std::to_string(o.common.spp));
+        if (o.sweep) {
+            sweep(o, cli);
+            return 0;
+        }
+        return render_program(o, cli);
+    });
+}

@@ -1,0 +1,66 @@
+// A heat map: what each pixel of a render cost (intersection tests, cells or nodes visited),
+// drawn in colour beside a labelled colour scale. It is the picture that makes an accelerator
+// visible: brute force is one flat colour (every ray tests every object), a grid or a tree shows
+// where its rays do their work.
+//
+// The cost of a pixel is the growth of one of the thread's counters (stats.hpp) while its samples
+// are traced: `with_cost` wraps a render's radiance function, and the render loop (render.hpp)
+// traces every sample of a pixel on one thread, so no two threads touch one pixel's count.
+#pragma once
+
+#include "common/image.hpp"
+#include "common/stats.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct CostMap {
+    int width = 0, height = 0;
+    Counter counter = Counter::intersection_tests;
+    std::vector<std::uint64_t> cost;  // per pixel, row-major, top row first
+
+    CostMap() = default;
+    CostMap(int w, int h, Counter c) : width(w), height(h), counter(c), cost(static_cast<size_t>(w) * h, 0) {}
+
+    // The pixel a sample at (x, y) belongs to (pixel centres at whole numbers, render.hpp).
+    std::uint64_t& at_sample(float x, float y)
+    {
+        const int i = static_cast<int>(std::floor(x + 0.5f));
+        const int j = static_cast<int>(std::floor(y + 0.5f));
+        return cost[static_cast<size_t>(j) * width + i];
+    }
+};
+
+// `radiance` with each call's cost added to the map at the sample's pixel.
+template <class Radiance>
+auto with_cost(CostMap& map, const Radiance& radiance)
+{
+    return [&map, &radiance](float x, float y, auto& rng) {
+        const std::uint64_t before = counted(local_counts(), map.counter);
+        const auto c = radiance(x, y, rng);
+        map.at_sample(x, y) += counted(local_counts(), map.counter) - before;
+        return c;
+    };
+}
+
+// The map's pixels as colours (viridis: dark blue for nothing, through green, to yellow at `top`
+// and above), and beside them a colour bar labelled from 0 to `top` with `what` beneath: one image
+// of the map's height. top <= 0 takes the map's 99.5th percentile, so a few costly pixels do not
+// wash the rest out; either is rounded up to a round number (1, 2, 2.5 or 5 times a power of ten).
+Image heat_image(const CostMap& map, const std::string& what, double top = 0.0);
+
+// a and b side by side (b to the right), on a dark background where their heights differ.
+Image side_by_side(const Image& a, const Image& b);
+
+// The viridis colour at v in [0, 1], linear RGB.
+color viridis(float v);
+
+// Draws `text` (stb_easy_font's small bitmap font, `scale` pixels a font pixel) with its top left
+// corner at (x, y); returns the text's width in pixels.
+int draw_text(Image& image, int x, int y, const std::string& text, const color& c, int scale = 2);
+
+}  // namespace rt

@@ -1,0 +1,65 @@
+// EXERCISES 07.2 and 07.3: the cell of a point, and the cells a box overlaps.
+#include "tests/ch07/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+// 4 x 2 x 5 cells of size 0.5 x 1 x 0.2 over the box from (-1, 0, 2) to (1, 2, 3).
+const GridShape grid = grid_shape({{-1, 0, 2}, {1, 2, 3}}, {4, 2, 5});
+
+void check_cell(const point3& p, const cell3& expected, const char* why)
+{
+    const cell3 got = cell_of(grid, p);
+    INFO("cell_of(" << show(grid) << ", " << show(p) << "): got " << show(got) << ", expected " << show(expected) << ": "
+         << why);
+    CHECK(got == expected);
+}
+
+void check_range(const Bounds& b, const cell3& first, const cell3& last, const char* why)
+{
+    const CellRange got = cells_overlapping(grid, b);
+    INFO("cells_overlapping(" << show(grid) << ", " << show(b) << "): got " << show(got.first) << " to "
+         << show(got.last) << ", expected " << show(first) << " to " << show(last) << ": " << why);
+    CHECK(got.first == first);
+    CHECK(got.last == last);
+}
+
+}  // namespace
+
+GRADED_TEST("cell_of: a point inside the grid lies in the cell floor((p - min) / size) says", "07.2", 3)
+{
+    check_cell({-0.9f, 0.5f, 2.1f}, {0, 0, 0}, "near the min corner");
+    check_cell({0.3f, 1.5f, 2.75f}, {2, 1, 3}, "(1.3 / 0.5, 1.5 / 1, 0.75 / 0.2) = (2.6, 1.5, 3.75)");
+    check_cell({0.9f, 1.9f, 2.95f}, {3, 1, 4}, "near the max corner");
+}
+
+GRADED_TEST("cell_of: a point on a boundary belongs to the cell above it; one on the far face to the last cell", "07.2", 3)
+{
+    check_cell({-0.5f, 1.0f, 2.0f}, {1, 1, 0}, "x = -0.5 and y = 1 are boundaries: the cells above them");
+    check_cell({-1.0f, 0.0f, 2.0f}, {0, 0, 0}, "the min corner itself");
+    check_cell({1.0f, 2.0f, 3.0f}, {3, 1, 4}, "the max corner: floor gives (4, 2, 5), one past the last cell");
+}
+
+STABILITY_TEST("cell_of: a point outside the grid, even very far or infinitely far, is clamped to the nearest cell", "07.2", 3)
+{
+    check_cell({-1.0000001f, -1e-7f, 1.9999999f}, {0, 0, 0}, "a hair outside the min corner (rounding)");
+    check_cell({5.0f, -3.0f, 2.5f}, {3, 0, 2}, "outside in x and y");
+    check_cell({1e30f, -1e30f, 1e30f}, {3, 0, 4}, "1e30 away: the float must be clamped before it becomes an int");
+    check_cell({infinity, -infinity, 2.5f}, {3, 0, 2}, "infinitely far");
+}
+
+GRADED_TEST("cells_overlapping: a box spans the cells from its min corner's to its max corner's", "07.3", 3)
+{
+    check_range({{-0.9f, 0.1f, 2.1f}, {-0.6f, 0.9f, 2.15f}}, {0, 0, 0}, {0, 0, 0}, "inside one cell");
+    check_range({{-0.9f, 0.1f, 2.1f}, {0.6f, 1.5f, 2.5f}}, {0, 0, 0}, {3, 1, 2}, "across several cells");
+    check_range({{-5, -5, -5}, {5, 5, 5}}, {0, 0, 0}, {3, 1, 4}, "larger than the grid: every cell");
+}
+
+GRADED_TEST("cells_overlapping: a box that ends exactly on a boundary is listed on both sides of it", "07.3", 3)
+{
+    check_range({{-0.9f, 0.2f, 2.2f}, {-0.5f, 1.0f, 2.4f}}, {0, 0, 1}, {1, 1, 2},
+                "it ends on x = -0.5, y = 1 and z = 2.4: the cells beyond those boundaries too");
+    check_range({{0.0f, 0.5f, 2.5f}, {0.0f, 0.5f, 2.5f}}, {2, 0, 2}, {2, 0, 2}, "a point box in one cell");
+}

@@ -1,0 +1,52 @@
+// EXERCISE 07.1: the grid's resolution by the cube-root rule.
+#include "tests/ch07/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+void check(const Bounds& box, int objects, float lambda, const cell3& expected, const char* why)
+{
+    const cell3 got = grid_resolution(box, objects, lambda);
+    INFO("grid_resolution(" << show(box) << ", " << objects << " objects, lambda " << lambda << "): got " << show(got)
+         << ", expected " << show(expected) << ": " << why);
+    CHECK(got == expected);
+}
+
+Bounds box(const point3& lo, const point3& hi) { return {lo, hi}; }
+
+}  // namespace
+
+GRADED_TEST("grid_resolution: a cube gets the cube root of lambda N cells along each axis", "07.1", 3)
+{
+    check(box({0, 0, 0}, {1, 1, 1}), 1000, 1.0f, {10, 10, 10}, "1000 cells of side 0.1");
+    check(box({-2, -2, -2}, {2, 2, 2}), 1000, 8.0f, {20, 20, 20}, "8000 cells of side 0.2: lambda multiplies the cells");
+    check(box({5, 5, 5}, {6, 6, 6}), 125, 1.0f, {5, 5, 5}, "the box's position does not matter");
+}
+
+GRADED_TEST("grid_resolution: a long box gets cubic cells, more of them along its long axis", "07.1", 3)
+{
+    // V = 8 x 1 x 1 = 8, 64 cells: side cbrt(8 / 64) = 0.5.
+    check(box({0, 0, 0}, {8, 1, 1}), 64, 1.0f, {16, 2, 2}, "cells of side 0.5: 16 x 2 x 2 = 64");
+    check(box({0, 0, 0}, {1, 4, 2}), 8, 1.0f, {1, 4, 2}, "cells of side 1");
+    // Rounded to the nearest count: 10 / cbrt(1000 / 1200) = 10.6 -> 11.
+    check(box({0, 0, 0}, {10, 10, 10}), 1200, 1.0f, {11, 11, 11}, "10.6 cells per axis round to 11");
+}
+
+GRADED_TEST("grid_resolution: a flat scene spreads its cells over its area; an axis thinner than a cell gets one", "07.1", 3)
+{
+    check(box({0, 0, 0}, {4, 0, 4}), 16, 1.0f, {4, 1, 4}, "a floor: 16 cells over its 4 x 4 area, side 1");
+    check(box({0, 0, 0}, {4, 0.01f, 4}), 16, 1.0f, {4, 1, 4},
+          "a floor 0.01 thick is thinner than a cell: it counts as flat, 16 cells over the area");
+    check(box({0, 0, 0}, {0, 0, 6}), 3, 2.0f, {1, 1, 6}, "a line: 6 cells along its length");
+}
+
+GRADED_TEST("grid_resolution: at least 1 and at most max_cells_per_axis cells per axis; no objects, 1 x 1 x 1", "07.1", 3)
+{
+    check(box({0, 0, 0}, {1, 1, 1}), 0, 4.0f, {1, 1, 1}, "no objects: one cell");
+    check(box({0, 0, 0}, {1, 1, 1}), 1, 0.001f, {1, 1, 1}, "fewer cells than one: one cell");
+    check(box({0, 0, 0}, {1, 1, 1}), 100000000, 1000.0f, {max_cells_per_axis, max_cells_per_axis, max_cells_per_axis},
+          "1e11 cells asked: max_cells_per_axis along each axis");
+    check(box({0, 0, 0}, {0, 0, 0}), 5, 1.0f, {1, 1, 1}, "a box of no extent at all: one cell");
+}
