@@ -43,7 +43,13 @@ using Counts = std::array<std::uint64_t, static_cast<size_t>(Counter::count_)>;
 inline thread_local Counts thread_counts{};
 inline Counts& local_counts() { return thread_counts; }
 
+#ifdef RT_NO_COUNTERS
+// Built with -DRT_COUNTERS=OFF, only to measure what counting costs (chapter 07's lesson): nothing
+// is counted, and --stats reports zeros.
+inline void count(Counter, std::uint64_t = 1) {}
+#else
 inline void count(Counter c, std::uint64_t n = 1) { thread_counts[static_cast<size_t>(c)] += n; }
+#endif
 
 inline std::uint64_t counted(const Counts& counts, Counter c) { return counts[static_cast<size_t>(c)]; }
 

@@ -80,7 +80,8 @@ set(objects_spheres 5)
 set(objects_cones 8)
 set(objects_concave 29)
 set(objects_patches 70)
-set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field)
+set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field
+  07_uniform_grid)
 foreach(chapter IN LISTS scene_chapters)
   foreach(scene IN LISTS kit_scenes)
     # 24 wide: the file's 400 x 400 keeps its aspect, so 24 x 24 = 576 eye rays.
@@ -123,11 +124,65 @@ set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nref
 set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
 set(classic_counts_light_behind "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
 foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall refraction_pane light_behind)
-  rt_expect_exit(04_shadow_feelers.classic_${scene} 04_shadow_feelers 0 "^${classic_counts_${scene}}"
-    --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
-    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/04_shadow_feelers_classic_${scene}.png")
+  foreach(chapter 04_shadow_feelers 07_uniform_grid)
+    rt_expect_exit(${chapter}.classic_${scene} ${chapter} 0 "^${classic_counts_${scene}}"
+      --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
+      --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_classic_${scene}.png")
+  endforeach()
 endforeach()
 # A w x h image shoots (w + 1) x (h + 1) eye rays.
 rt_expect_exit(04_shadow_feelers.classic_corner_rays 04_shadow_feelers 0 "^eye_rays=651\n"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/cones.nff" --classic --width 30 --height 20 --stats
   --out "${CMAKE_CURRENT_BINARY_DIR}/programs/04_shadow_feelers_classic_corners.png")
+
+# From chapter 07 on: an accelerator renders brute force's picture, byte for byte, with brute force's
+# rays, in the chapter modes and by the classic rules, on the kit's scenes and generated ones.
+# rt_same_render(<name> <program> FIRST <options> SECOND <options> ARGS <options> [GENERATE <nff_generate args>])
+function(rt_same_render name program)
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "FIRST;SECOND;ARGS;GENERATE")
+  string(JOIN "|" first ${arg_FIRST})
+  string(JOIN "|" second ${arg_SECOND})
+  string(JOIN "|" args ${arg_ARGS})
+  set(generator "")
+  if(arg_GENERATE)
+    string(JOIN "|" generate ${arg_GENERATE})
+    set(generator -D "GENERATOR=$<TARGET_FILE:nff_generate>" -D "GENERATE=${generate}")
+  endif()
+  add_test(NAME programs.${name}
+    COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:${program}>" -D "ARGS=${args}" -D "FIRST=${first}"
+      -D "SECOND=${second}" -D "OUT=${CMAKE_CURRENT_BINARY_DIR}/programs/${name}" ${generator}
+      -P "${CMAKE_CURRENT_SOURCE_DIR}/same_render.cmake")
+  set_tests_properties(programs.${name} PROPERTIES LABELS "programs")
+endfunction()
+foreach(scene IN LISTS kit_scenes)
+  foreach(mode plain classic)
+    set(extra "")
+    if(mode STREQUAL "classic")
+      set(extra --classic)
+    endif()
+    rt_same_render(07_uniform_grid.grid_as_brute_${mode}_${scene} 07_uniform_grid FIRST --accel brute SECOND --accel grid
+      ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 ${extra})
+  endforeach()
+endforeach()
+foreach(generated "sphereflake;2" "pyramid;3" "tree;3" "mountain;4")
+  list(GET generated 0 kind)
+  list(GET generated 1 depth)
+  rt_same_render(07_uniform_grid.grid_as_brute_classic_${kind}${depth} 07_uniform_grid FIRST --accel brute
+    SECOND --accel grid --lambda 4 ARGS --width 64 --classic GENERATE ${kind} --depth ${depth})
+endforeach()
+rt_same_render(07_uniform_grid.figure_threads 07_uniform_grid FIRST --threads 1 SECOND --threads 2 ARGS --width 80 --height 45)
+rt_expect_exit(07_uniform_grid.figure_stats 07_uniform_grid 0
+  "rays_primary=600\n.*accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\n.*references_per_object=[1-9]"
+  --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_stats.png")
+rt_expect_exit(07_uniform_grid.heatmap_written 07_uniform_grid 0 "accel=brute"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 32 --accel brute --heat-of tests --stats
+  --heatmap "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat.png"
+  --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat_scene.png")
+rt_expect_exit(07_uniform_grid.unknown_accel 07_uniform_grid 2 "--accel takes brute or grid, got 'kd-tree'" --accel kd-tree)
+rt_expect_exit(07_uniform_grid.lambda_with_brute 07_uniform_grid 2 "--lambda sets the grid's density; it does not apply to --accel brute"
+  --accel brute --lambda 3)
+rt_expect_exit(07_uniform_grid.lambda_zero 07_uniform_grid 2 "--lambda must lie strictly between 0 and" --lambda 0)
+rt_expect_exit(07_uniform_grid.lambda_too_dense 07_uniform_grid 2 "cells .* passes the limit of 33554432 cells: choose a smaller lambda"
+  --lambda 5000 --width 8 --height 8)
+rt_expect_exit(07_uniform_grid.unknown_heat 07_uniform_grid 2 "--heat-of takes tests or cells, got 'time'" --heat-of time)
+rt_expect_exit(07_uniform_grid.classic_without_scene 07_uniform_grid 2 "--classic .* needs --scene FILE.nff" --classic)

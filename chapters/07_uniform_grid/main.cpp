@@ -275,7 +275,7 @@ int main(int argc, char** argv)
         add_scene_option(cli, o.scene);
         cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
         cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
-        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1000.0f);
+        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
         cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
         cli.option("--heat-of", o.heat_of, "what the heat map counts: tests (intersection tests) or cells (visited)");
         cli.flag("--sweep", o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade");
