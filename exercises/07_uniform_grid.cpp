@@ -57,9 +57,10 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
     // 3. For each axis a with ray.dir[a] != 0:
     //      going up (dir > 0): step_p = +strides()[a], boundary = box.min + (c[a] + 1) s, m = n - 1 - c[a];
     //      going down:         step_p = -strides()[a], boundary = box.min + c[a] s,       m = c[a];
-    //      t_delta = s / |dir[a]|, t_first = (boundary - origin[a]) / dir[a], t_max = t_first,
-    //      and t_end = min(t_end, boundary_t(walk, a, m)).
-    // Hint: s is grid.cell_size[a]; leave the other axes as GridWalk{} has them (infinity, 0).
+    //      t_delta = s / |dir[a]|, t_first = (boundary - origin[a]) / dir[a], both in double,
+    //      t_max = t_first rounded to float, and t_end = min(t_end, boundary_t(walk, a, m)).
+    // Hint: s is grid.cell_size[a]; static_cast<double>(x) before dividing; leave the other axes as
+    // GridWalk{} has them (infinity, 0).
     return GridWalk{};
 }
 

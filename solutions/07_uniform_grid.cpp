@@ -106,9 +106,10 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
     // 3. For each axis a with ray.dir[a] != 0:
     //      going up (dir > 0): step_p = +strides()[a], boundary = box.min + (c[a] + 1) s, m = n - 1 - c[a];
     //      going down:         step_p = -strides()[a], boundary = box.min + c[a] s,       m = c[a];
-    //      t_delta = s / |dir[a]|, t_first = (boundary - origin[a]) / dir[a], t_max = t_first,
-    //      and t_end = min(t_end, boundary_t(walk, a, m)).
-    // Hint: s is grid.cell_size[a]; leave the other axes as GridWalk{} has them (infinity, 0).
+    //      t_delta = s / |dir[a]|, t_first = (boundary - origin[a]) / dir[a], both in double,
+    //      t_max = t_first rounded to float, and t_end = min(t_end, boundary_t(walk, a, m)).
+    // Hint: s is grid.cell_size[a]; static_cast<double>(x) before dividing; leave the other axes as
+    // GridWalk{} has them (infinity, 0).
     // SOLUTION BEGIN
     GridWalk walk;
     const std::optional<Interval> inside = hit_bounds(grid.box, ray, range);
@@ -129,9 +130,9 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
         const bool up = d > 0.0f;
         const float boundary = grid.box.min[a] + static_cast<float>(up ? c[a] + 1 : c[a]) * s;
         walk.step_p[a] = up ? stride[a] : -stride[a];
-        walk.t_delta[a] = s / std::abs(d);
-        walk.t_first[a] = (boundary - ray.origin[a]) / d;
-        walk.t_max[a] = walk.t_first[a];
+        walk.t_delta[a] = static_cast<double>(s) / std::abs(static_cast<double>(d));
+        walk.t_first[a] = (static_cast<double>(boundary) - ray.origin[a]) / d;
+        walk.t_max[a] = static_cast<float>(walk.t_first[a]);
         const int to_face = up ? grid.n[a] - 1 - c[a] : c[a];
         walk.t_end = std::min(walk.t_end, boundary_t(walk, a, to_face));
     }

@@ -79,8 +79,10 @@ struct GridWalk {
     bool missed = true;  // the ray does not meet the box within its range: no cell to visit
     int p = 0;           // the current cell's address
     int step_p[3] = {0, 0, 0};  // what crossing a boundary of axis a adds to p: +-stride, 0 if never
-    float t_first[3] = {infinity, infinity, infinity};  // t of the first boundary crossed on axis a
-    float t_delta[3] = {infinity, infinity, infinity};  // t from one boundary of axis a to the next
+    // t of the first boundary crossed on axis a, and from one boundary of axis a to the next: kept
+    // in double, so that boundary_t rounds once (see there).
+    double t_first[3] = {infinity, infinity, infinity};
+    double t_delta[3] = {infinity, infinity, infinity};
     int steps[3] = {0, 0, 0};                           // boundaries of axis a crossed so far
     float t_max[3] = {infinity, infinity, infinity};    // t of the next boundary of axis a
     float t_enter = 0.0f;  // where the ray entered the current cell
@@ -99,12 +101,13 @@ struct GridWalk {
 };
 
 // Given, for 07.4 and 07.5: the t of the k-th boundary after the first on axis a, computed from
-// the first (t_first + k t_delta) and not by adding t_delta once per step: a sum of 10^4 t_delta
-// drifts by a fraction of a cell (the lesson measures it), this by a few units in the last place.
-// Use it everywhere a boundary's t is needed, so two computations of one boundary agree exactly.
+// the first, t_first + k t_delta, and not by adding t_delta once per step: a float sum of 10^4
+// t_delta drifts by most of a cell (the lesson measures it). In double, with one rounding to float
+// at the end, it stays within 1e-3 cells after 10^4 steps. Use it everywhere a boundary's t is
+// needed, so that two computations of one boundary agree exactly.
 inline float boundary_t(const GridWalk& walk, int axis, int k)
 {
-    return walk.t_first[axis] + static_cast<float>(k) * walk.t_delta[axis];
+    return static_cast<float>(walk.t_first[axis] + static_cast<double>(k) * walk.t_delta[axis]);
 }
 
 // EXERCISE 07.4: the walk's setup. The part of `range` inside the box (hit_bounds, the robust slab
@@ -112,7 +115,8 @@ inline float boundary_t(const GridWalk& walk, int axis, int k)
 // axis a with dir[a] != 0 (test with != 0, so -0 counts as 0): the step is +1 or -1 cell with the
 // sign of dir[a], step_p[a] = +-strides()[a], t_delta[a] = s_a / |dir[a]|, t_first[a] the t at which
 // the ray reaches the first cell's far boundary in its direction (box.min_a + (i_a + 1) s_a going
-// up, box.min_a + i_a s_a going down), t_max[a] = t_first[a]. Other axes keep infinity and 0.
+// up, box.min_a + i_a s_a going down; computed in double), t_max[a] = t_first[a] (rounded to
+// float). Other axes keep infinity and 0.
 // t_enter is the entry t. t_end is the least of range.max and, for each stepping axis, the t of the
 // box's face, boundary_t(walk, a, m) with m the boundaries between the first cell and that face
 // (n_a - 1 - i_a going up, i_a going down): the walk never steps out of the grid, whatever the

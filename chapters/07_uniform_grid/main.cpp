@@ -7,6 +7,7 @@
 #include "07_uniform_grid/figure.hpp"
 #include "common/cli.hpp"
 #include "common/png.hpp"
+#include "common/random.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
 
@@ -224,6 +225,41 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
     }
 }
 
+// The next-boundary t two ways, against the exact one: boundary_t (t_first + k t_delta in double,
+// rounded once) and t_max += t_delta in float, once per step. Cells of size 1 from a random origin
+// in the first cell along random directions; the error is in cells, |t - t_exact| |d_x| / s.
+void measure_drift(int rays)
+{
+    Rng rng(2026, 7);
+    std::vector<double> direct[2], summed[2];
+    const int checks[2] = {10000, 100000};
+    for (int r = 0; r < rays; ++r) {
+        const float o = rng.next_float();
+        const float dx = 0.05f + 0.95f * rng.next_float();  // the x component of a unit direction
+        GridWalk w;
+        w.t_first[0] = (1.0 - o) / dx;
+        w.t_delta[0] = 1.0 / dx;
+        float t_max = static_cast<float>(w.t_first[0]);
+        for (int k = 1, c = 0; k <= checks[1]; ++k) {
+            t_max += static_cast<float>(w.t_delta[0]);
+            if (k == checks[c]) {
+                const long double exact = (1.0L + k - o) / dx;
+                direct[c].push_back(static_cast<double>(std::abs(boundary_t(w, 0, k) - exact) * dx));
+                summed[c].push_back(static_cast<double>(std::abs(t_max - exact) * dx));
+                ++c;
+            }
+        }
+    }
+    std::cout << "\nthe next boundary's t after k steps, error in cells (" << rays << " rays, median / max)\n\n"
+              << "| k | boundary_t: t_first + k t_delta | t_max += t_delta |\n|---|---|---|\n";
+    for (int c = 0; c < 2; ++c) {
+        const auto worst = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+        std::cout << std::scientific << std::setprecision(1) << "| " << checks[c] << " | " << median(direct[c]) << " / "
+                  << worst(direct[c]) << " | " << median(summed[c]) << " / " << worst(summed[c]) << " |\n"
+                  << std::defaultfloat;
+    }
+}
+
 const char* comparison_header = "scene,objects,structure,tests_per_ray,cells_per_ray,render_ms,build_ms,bytes,runs,speedup";
 
 void print_comparison_heading(const std::string& what, const RenderSettings& settings, int repeat)
@@ -260,6 +296,7 @@ void sweep(const Options& o, const CommandLine& cli)
     if (!cli.given("--height"))
         lambda_settings.height = 180;
     sweep_lambda(o, lambda_settings);
+    measure_drift(1000);
     std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << " and " << csv_beside(o.csv, "_scenes") << '\n';
 }
 
