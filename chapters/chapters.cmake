@@ -63,6 +63,8 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND figure_files "${figure}")
 endforeach()
 add_custom_target(figures DEPENDS ${figure_files})
+# The scene generator the README points instructors to comes with the figures.
+add_dependencies(figures nff_generate)
 
 # The speed/accuracy tables: `cmake --build <build> --target trade` runs every program's --sweep
 # into build/trade/NN_name.csv and, when gnuplot is installed (optional: nothing else needs it),

@@ -183,7 +183,7 @@ void sweep_lambda(const Options& o, const RenderSettings& settings)
     std::ofstream csv = open_csv(o.csv, "scene,objects,lambda,resolution,cells,empty_cells_percent,references_per_object,"
                                         "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms");
     std::cout << "\nlambda (cells per object) on " << nff.name << ", " << settings.width << "x" << settings.height
-              << ", medians of " << o.repeat << " runs\n\n"
+              << ", " << settings.threads << " thread(s) (0: all), medians of " << o.repeat << " runs\n\n"
               << "| lambda | resolution | empty cells | refs/object | MB | build ms | tests/ray | cells/ray | render ms |\n"
                  "|---|---|---|---|---|---|---|---|---|\n";
     for (const float lambda : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f, 32.0f}) {
@@ -264,7 +264,9 @@ const char* comparison_header = "scene,objects,structure,tests_per_ray,cells_per
 
 void print_comparison_heading(const std::string& what, const RenderSettings& settings, int repeat)
 {
-    std::cout << "\n" << what << ", " << settings.width << "x" << settings.height << ", images identical to brute force; "
+    std::cout << "\n" << what << ", " << settings.width << "x" << settings.height << ", "
+              << (settings.threads == 1 ? std::string("1 thread") : std::to_string(settings.threads) + " threads (0: all)")
+              << ", images identical to brute force; "
               << "medians of " << repeat << " runs (runs column)\n\n"
               << "| scene | objects | structure | tests/ray | cells/ray | render ms | build ms | MB | runs | speedup |\n"
                  "|---|---|---|---|---|---|---|---|---|---|\n";
@@ -274,14 +276,18 @@ void sweep(const Options& o, const CommandLine& cli)
 {
     RenderSettings settings = render_settings(o.common);
     settings.show_progress = false;
+    // One thread unless asked: a single thread's times vary least from run to run.
+    if (!cli.given("--threads"))
+        settings.threads = 1;
     if (!cli.given("--width"))
         settings.width = 64;
     if (!cli.given("--height"))
         settings.height = 36;
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
     std::ofstream n_csv = open_csv(csv_beside(o.csv, "_n"), comparison_header);
-    print_comparison_heading("brute force against the grid as the mountain grows (lambda " + std::to_string(o.lambda) + ")",
-                             settings, o.repeat);
+    std::ostringstream what;
+    what << "brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
+    print_comparison_heading(what.str(), settings, o.repeat);
     for (int depth = 1; depth <= 8; ++depth)
         compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv);
     std::ofstream scenes_csv = open_csv(csv_beside(o.csv, "_scenes"), comparison_header);
