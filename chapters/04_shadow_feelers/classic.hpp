@@ -24,16 +24,29 @@
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "04_shadow_feelers/feeler.hpp"
 #include "04_shadow_feelers/nff_scene.hpp"
+#include "common/error.hpp"
 #include "common/heatmap.hpp"
 #include "common/render.hpp"
 #include "common/scene_file.hpp"
 
+#include <string>
 #include <vector>
 
 namespace rt::classic {
 
 // The eye ray is ray 1 of its path.
 constexpr int max_depth = 5;
+
+// What --classic needs of the other options (InputError otherwise): a scene file, and one sample
+// per pixel, since its eye rays go through the pixels' corners.
+inline void check_classic_options(bool classic, const std::string& scene, int spp)
+{
+    if (classic && scene.empty())
+        throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
+    if (classic && spp != 1)
+        throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
+                         std::to_string(spp));
+}
 
 struct ClassicScene {
     LitScene lit;                        // shapes and Phong materials; its lights are not used

@@ -279,11 +279,7 @@ int main(int argc, char** argv)
             return 0;
         const FeelerSettings feelers = feelers_named(o);
         check_scene_without_sweep(o.scene, o.sweep);
-        if (o.classic && o.scene.empty())
-            throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
-        if (o.classic && o.common.spp != 1)
-            throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
-                             std::to_string(o.common.spp));
+        classic::check_classic_options(o.classic, o.scene, o.common.spp);
         if (o.classic && (cli.given("--offset") || cli.given("--feelers")))
             throw InputError("--classic sends NFF's feelers, any-hit from the robust offset: --offset and --feelers "
                              "do not apply");

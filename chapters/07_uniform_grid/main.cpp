@@ -332,11 +332,7 @@ int main(int argc, char** argv)
         if (o.accel == "brute" && cli.given("--lambda"))
             throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
         check_scene_without_sweep(o.scene, o.sweep);
-        if (o.classic && o.scene.empty())
-            throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
-        if (o.classic && o.common.spp != 1)
-            throw InputError("--classic shoots one eye ray through each pixel corner: --spp must be 1, got " +
-                             std::to_string(o.common.spp));
+        classic::check_classic_options(o.classic, o.scene, o.common.spp);
         if (o.sweep) {
             sweep(o, cli);
             return 0;
