@@ -1,4 +1,4 @@
-# The two tracks (DESIGN.md): each chapter's exercise and solution build into their own object
+# The two tracks: each chapter's exercise and solution build into their own object
 # library, ex_NN and sol_NN, defining the same functions. A program or test for chapter N links one
 # library per chapter 1..N.
 

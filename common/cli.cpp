@@ -1,5 +1,6 @@
 #include "common/cli.hpp"
 
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/stats.hpp"
 
@@ -9,6 +10,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 namespace rt {
@@ -133,8 +135,18 @@ void add_common_options(CommandLine& cli, CommonOptions& o)
     cli.flag("--stats", o.stats, "print what the render did, one key=value per line");
 }
 
+void check_image_size(int width, int height)
+{
+    const long long pixels = static_cast<long long>(width) * height;
+    if (pixels > max_image_pixels)
+        throw InputError("an image of " + std::to_string(width) + " x " + std::to_string(height) + " pixels needs about " +
+                         std::to_string(pixels * 12 / 1000000) + " MB of colour; the limit is " +
+                         std::to_string(max_image_pixels) + " pixels (8192 x 4096): choose a smaller --width or --height");
+}
+
 RenderSettings render_settings(const CommonOptions& o)
 {
+    check_image_size(o.width, o.height);
     RenderSettings s;
     s.width = o.width;
     s.height = o.height;
@@ -146,9 +158,12 @@ RenderSettings render_settings(const CommonOptions& o)
 
 int write_figure(const CommonOptions& options, const std::function<Image()>& render, StatsPrinter print)
 {
+    check_writable(options.out, "PNG");
     const Timer timer;
-    const Image image = render();
+    Image image = render();
     const double seconds = timer.seconds();
+    if (std::getenv("RT_POISON_PIXEL") && !image.pixels.empty())
+        image.pixels[0].r = std::numeric_limits<float>::quiet_NaN();
     write_png(options.out, image);
     if (options.stats)
         print(std::cout, total_counts(), seconds);

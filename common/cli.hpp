@@ -59,15 +59,23 @@ struct CommonOptions {
 
 void add_common_options(CommandLine& cli, CommonOptions& options);
 
-// The render the common options ask for (size, samples, threads, seed).
+// Why 2^25 pixels (8192 x 4096): an image is 12 bytes a pixel of linear colour, and the noisy
+// chapters keep a second one for the variance: 800 MB at this size, the most a render here should
+// take of a student's machine. Larger is refused before the render (InputError naming the size).
+constexpr long long max_image_pixels = 1LL << 25;
+void check_image_size(int width, int height);
+
+// The render the common options ask for (size, samples, threads, seed); checks the size.
 RenderSettings render_settings(const CommonOptions& options);
 
 // What every chapter program does without --sweep: renders its figure (timed), writes it to
 // options.out, and prints the --stats lines when asked (print_stats, or the printer given).
 // Returns the exit status: 0, or exit_kit_bug when a pixel came out NaN or infinite.
 using StatsPrinter = std::function<void(std::ostream&, const Counts&, double)>;
-int write_figure(const CommonOptions& options, const std::function<Image()>& render,
-                 StatsPrinter print = print_stats);
+// (For the kit's own tests: with the environment variable RT_POISON_PIXEL set, pixel (0, 0) is made
+// NaN before the check, so a test can prove that every program returns this status.)
+[[nodiscard]] int write_figure(const CommonOptions& options, const std::function<Image()>& render,
+                               StatsPrinter print = print_stats);
 
 // Runs a program's body, turning InputError into "program: message" on stderr and exit status 2.
 int run_program(const std::string& program, const std::function<int()>& body);

@@ -1,4 +1,4 @@
-// The kit's two error paths (STYLE.md, habit 10): `assert` for the kit's own assumptions, and an
+// The kit's two error paths: `assert` for the kit's own assumptions, and an
 // InputError for bad input, which the programs turn into one line and exit status 2.
 #pragma once
 

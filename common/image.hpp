@@ -26,8 +26,9 @@ float srgb_encode(float linear);
 float srgb_decode(float encoded);
 
 // Tone map (clamp to [0, 1]) and encode as 8-bit sRGB, three bytes a pixel, top row first.
-// A NaN or infinite pixel is a bug upstream: it asserts in debug builds and becomes magenta
-// (255, 0, 255) otherwise, so it can never hide as black.
+// A NaN or infinite pixel is a bug upstream: it becomes magenta (255, 0, 255), so it can never hide
+// as black, and the programs' write_figure names it and exits 3 (a test writes one on purpose, so
+// this is no assert).
 std::vector<std::uint8_t> to_srgb8(const Image& image);
 
 // The inverse, for reading reference images back: 8-bit sRGB to linear.

@@ -62,6 +62,16 @@ bool is_command(std::string_view word)
 // Whitespace-separated tokens with their line numbers; `#` starts a comment to the end of the line
 // (NFF: "As soon as a '#' character is detected, the rest of the line is considered a comment").
 // A line ends at \n, \r\n or a lone \r, so files from any system count lines alike.
+// Whether `after` (the text just after a '#' that ends a token) starts as Microsoft's spellings of
+// NaN and infinity continue: QNAN, SNAN, IND or INF.
+inline bool windows_non_number(std::string_view after)
+{
+    for (const std::string_view word : {"QNAN", "SNAN", "IND", "INF"})
+        if (after.substr(0, word.size()) == word)
+            return true;
+    return false;
+}
+
 class Lexer {
 public:
     explicit Lexer(std::string_view text) : text_(text)
@@ -84,6 +94,12 @@ public:
         std::size_t end = pos_;
         while (end < text_.size() && !is_blank(text_[end]) && text_[end] != '#')
             ++end;
+        // Microsoft's C library prints NaN and infinity as 1.#QNAN, -1.#IND, 1.#INF, 1.#SNAN: read
+        // by the letter of NFF that is the number 1 and a comment, a wrong value and no word of it.
+        // Such a token is kept whole, so that the number it stands for is refused by name.
+        if (end > pos_ && end < text_.size() && windows_non_number(text_.substr(end + 1)))
+            while (end < text_.size() && !is_blank(text_[end]))
+                ++end;
         return {text_.substr(pos_, end - pos_), line_};
     }
 
@@ -214,6 +230,9 @@ private:
         const std::string where = entity + ": " + field;
         switch (parse_double(token.text, value)) {
         case NumberStatus::not_a_number:
+            if (token.text.find('#') != std::string_view::npos)
+                fail(token.line, where + " must be a number, got " + quote(token.text) +
+                                     ", Microsoft's spelling of NaN or infinity: what wrote the file computed no number there");
             fail(token.line, where + " must be a number, got " + quote(token.text) +
                                  (is_command(token.text) ? hint : ""));
         case NumberStatus::out_of_range:
@@ -440,6 +459,11 @@ private:
         PolygonTriangles cut;
         try {
             cut = triangulate_polygon(vertices);
+        } catch (const DegeneratePolygon& e) {
+            scene_.warnings.push_back(name_ + ":" + std::to_string(command.line) + ": " + entity + ": " + e.what() +
+                                      ": skipped");
+            ++scene_.skipped_polygons;
+            return;
         } catch (const InputError& e) {
             fail(command.line, entity + ": " + e.what());
         }

@@ -105,6 +105,12 @@ struct NffScene {
     std::vector<NffSphere> spheres;
     std::vector<NffTriangle> triangles;
     std::vector<NffCone> cones;
+
+    // Polygons and patches with no area (every vertex on one line, or fewer than three distinct
+    // ones), as the SPD generators write a few of (the teapot at size 1 has four): they cover
+    // nothing, so they are skipped, each with a warning "FILE:LINE: ...", rather than refused.
+    std::vector<std::string> warnings;
+    int skipped_polygons = 0;
 };
 
 // Reads a whole NFF text from `in`; `name` stands for the file in messages.

@@ -1,6 +1,7 @@
 #include "common/png.hpp"
 
 #include "common/error.hpp"
+#include "common/output.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -12,10 +13,7 @@ namespace rt {
 
 void write_png(const std::string& path, const Image& image)
 {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    std::error_code ec;
-    if (!parent.empty())
-        std::filesystem::create_directories(parent, ec);
+    check_writable(path, "PNG");
     const std::vector<std::uint8_t> bytes = to_srgb8(image);
     // stb returns 0 on failure and non-0 on success.
     if (image.width < 1 || image.height < 1 ||

@@ -300,7 +300,7 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
     while (kept.size() > 1 && glm::length(dvec3(vertices[kept.back()]) - dvec3(vertices[kept.front()])) <= noise)
         kept.pop_back();
     if (kept.size() < 3)
-        throw InputError("has fewer than 3 distinct vertices");
+        throw DegeneratePolygon("has fewer than 3 distinct vertices");
 
     std::vector<point3> distinct;
     for (const std::size_t i : kept)
@@ -312,7 +312,7 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
         perimeter += glm::length(dvec3(distinct[(k + 1) % distinct.size()]) - dvec3(distinct[k]));
     // Vertices within noise of one line enclose at most a band of that width along the edges.
     if (!(area > noise * perimeter))
-        throw InputError("its vertices all lie on one line (no area)");
+        throw DegeneratePolygon("its vertices all lie on one line (no area)");
     const dvec3 normal = area_vector / (2.0 * area);
 
     // Planar: every vertex near the plane through the vertices' centroid.

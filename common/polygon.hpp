@@ -14,6 +14,7 @@
 // where the polygon stands.
 #pragma once
 
+#include "common/error.hpp"
 #include "common/vec.hpp"
 
 #include <array>
@@ -49,6 +50,12 @@ constexpr std::size_t polygon_max_vertices = 10000;
 // vertex on the straight line between its neighbours stays a corner of the triangles (no
 // T-junctions). Vertices and edges in messages are counted from 1 in the given order (edge k runs
 // from vertex k to vertex k+1).
+// The first two, no area at all, throw DegeneratePolygon: a file can still be rendered without such
+// a polygon (it covers nothing), so the reader skips it with a warning; the others it refuses.
+struct DegeneratePolygon : InputError {
+    using InputError::InputError;
+};
+
 PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices);
 
 }  // namespace rt

@@ -1,7 +1,7 @@
 // A ray p(t) = u + v t (the slides' notation; E + t V in the sphere test).
 //
 // Written once over the scalar type T so that a chapter can run the same formula in float and in
-// double and measure what float costs (DESIGN.md, "Float against double"); the kit's rays are
+// double and measure what float costs (chapter 02's trade); the kit's rays are
 // float, `Ray`.
 #pragma once
 

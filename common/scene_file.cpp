@@ -1,8 +1,10 @@
 #include "common/scene_file.hpp"
 
 #include "common/error.hpp"
+#include "common/stats.hpp"
 
 #include <algorithm>
+#include <iostream>
 #include <utility>
 #include <cmath>
 
@@ -53,6 +55,9 @@ SceneRender scene_render(NffScene scene, const RenderSettings& settings)
 SceneRender load_scene_render(const std::string& path, const CommonOptions& options, const CommandLine& cli)
 {
     SceneRender r{read_nff(path), {}, render_settings(options)};
+    for (const std::string& warning : r.scene.warnings)
+        std::cerr << "warning: " << warning << '\n';
+    note_stat("skipped_polygons", std::to_string(r.scene.skipped_polygons));
     const NffView& view = r.scene.view;
     const bool width_given = cli.given("--width"), height_given = cli.given("--height");
     // One side given: the other keeps the file's aspect ratio.
@@ -63,6 +68,7 @@ SceneRender load_scene_render(const std::string& path, const CommonOptions& opti
         r.settings.width = height_given ? scaled(r.settings.height, view.width, view.height) : view.width;
     if (!height_given)
         r.settings.height = width_given ? scaled(r.settings.width, view.height, view.width) : view.height;
+    check_image_size(r.settings.width, r.settings.height);
     r.camera = nff_camera(r.scene.view, r.settings.width, r.settings.height);
     return r;
 }

@@ -8,6 +8,7 @@ namespace rt {
 namespace {
 std::mutex totals_mutex;
 Counts totals{};
+std::vector<std::pair<std::string, std::string>> notes;
 }  // namespace
 
 void flush_counters()
@@ -34,6 +35,8 @@ void reset_counters()
     totals = Counts{};
 }
 
+void note_stat(const std::string& key, const std::string& value) { notes.emplace_back(key, value); }
+
 std::uint64_t total_rays(const Counts& counts)
 {
     return counts[static_cast<size_t>(Counter::primary_rays)] + counts[static_cast<size_t>(Counter::shadow_rays)] +
@@ -47,6 +50,8 @@ void print_totals(std::ostream& out, const Counts& counts, double seconds)
     out << "rays=" << total_rays(counts) << '\n';
     out << "seconds=" << seconds << '\n';
     out << "rays_per_second=" << (seconds > 0.0 ? static_cast<double>(total_rays(counts)) / seconds : 0.0) << '\n';
+    for (const auto& [key, value] : notes)
+        out << key << '=' << value << '\n';
 }
 
 }  // namespace

@@ -12,6 +12,9 @@
 #include <cstdint>
 #include <functional>
 #include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace rt {
 
@@ -74,6 +77,10 @@ public:
 private:
     std::chrono::steady_clock::time_point start_;
 };
+
+// A line a program adds to its --stats beyond the counters (what a scene file's reader skipped, say):
+// printed as key=value after rays_per_second, by both printers below.
+void note_stat(const std::string& key, const std::string& value);
 
 // The `--stats` format: one key=value per line, counters first, then seconds and rays_per_second.
 void print_stats(std::ostream& out, const Counts& counts, double seconds);

@@ -1,5 +1,7 @@
 #include "common/trade.hpp"
 
+#include "common/output.hpp"
+
 #include "common/error.hpp"
 #include "common/stats.hpp"
 
@@ -68,10 +70,7 @@ std::string csv_beside(const std::string& path, const std::string& suffix)
 
 void write_trade_csv(const std::string& path, const TradeTable& table)
 {
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    std::error_code ec;
-    if (!parent.empty())
-        std::filesystem::create_directories(parent, ec);
+    check_writable(path, "CSV");
     std::ofstream out(path);
     if (!out)
         throw InputError(path + ": cannot write the CSV file");

@@ -1,5 +1,5 @@
 // The speed/accuracy trade, measured: each chapter program can sweep its own knob and print a
-// table of cost against error, and write it as CSV (DESIGN.md, "Measuring the trade").
+// table of cost against error, and write it as CSV.
 #pragma once
 
 #include "common/image.hpp"

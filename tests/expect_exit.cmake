@@ -1,6 +1,10 @@
 # Runs a program and checks its exit status and what it printed.
 #   cmake -D PROGRAM=... -D ARGS="a|b|c" -D STATUS=2 -D MATCH=regex -P expect_exit.cmake
+#   -D POISON=1 sets RT_POISON_PIXEL, which makes write_figure poison one pixel (cli.hpp).
 string(REPLACE "|" ";" args "${ARGS}")
+if(POISON)
+  set(ENV{RT_POISON_PIXEL} 1)
+endif()
 execute_process(COMMAND "${PROGRAM}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
 if(NOT rc STREQUAL "${STATUS}")
   message(FATAL_ERROR "${PROGRAM} ${args}: exit status ${rc}, expected ${STATUS}\nstdout: ${out}\nstderr: ${err}")

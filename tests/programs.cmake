@@ -8,6 +8,16 @@ function(rt_expect_exit name program status match)
   set_tests_properties(programs.${name} PROPERTIES LABELS "programs")
 endfunction()
 
+# Every program returns write_figure's status: a NaN pixel exits 3 with its message.
+foreach(chapter IN LISTS RT_CHAPTERS)
+  add_test(NAME programs.${chapter}.nan_pixel_fails
+    COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:${chapter}>" -D POISON=1 -D STATUS=3
+      -D "MATCH=a NaN or infinite radiance reached 1 pixels"
+      -D "ARGS=--width|8|--height|6|--out|${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_poisoned.png"
+      -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
+  set_tests_properties(programs.${chapter}.nan_pixel_fails PROPERTIES LABELS "programs")
+endforeach()
+
 foreach(chapter IN LISTS RT_CHAPTERS)
   rt_expect_exit(${chapter}.unknown_flag ${chapter} 2 "unknown option '--colour'" --colour)
   rt_expect_exit(${chapter}.zero_width ${chapter} 2 "--width must be between 1 and" --width 0)
@@ -36,7 +46,9 @@ rt_expect_exit(04_shadow_feelers.unknown_offset 04_shadow_feelers 2
   "--offset takes none, t-min, normal or robust, got 'epsilon'" --offset epsilon)
 rt_expect_exit(04_shadow_feelers.unknown_feelers 04_shadow_feelers 2
   "--feelers takes any-hit, closest-hit or off, got 'all'" --feelers all)
-rt_expect_exit(04_shadow_feelers.scale_zero 04_shadow_feelers 2 "--scale must lie strictly between 0 and" --scale 0)
+rt_expect_exit(04_shadow_feelers.scale_zero 04_shadow_feelers 2 "--scale must lie strictly between 1e-07 and" --scale 0)
+rt_expect_exit(04_shadow_feelers.scale_tiny 04_shadow_feelers 2 "--scale must lie strictly between 1e-07 and 1e\\+07, got 1e-30"
+  --scale 1e-30)
 rt_expect_exit(04_shadow_feelers.scale_not_finite 04_shadow_feelers 2 "--scale takes a finite number, got 'inf'" --scale inf)
 rt_expect_exit(04_shadow_feelers.probes_too_few 04_shadow_feelers 2 "--probes must be between 1000 and" --probes 10)
 rt_expect_exit(04_shadow_feelers.shadow_rays_counted 04_shadow_feelers 0
@@ -100,6 +112,20 @@ foreach(chapter IN LISTS scene_chapters)
   rt_expect_exit(${chapter}.scene_with_sweep ${chapter} 2 "--sweep measures the chapter's own scenes; it does not take --scene"
     --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --sweep)
 endforeach()
+# A standard file with a patch of no area renders, with one warning naming its line, and counts it.
+foreach(chapter IN LISTS scene_chapters)
+  rt_expect_exit(${chapter}.scene_zero_area_patch ${chapter} 0
+    "skipped_polygons=1\n.*warning: [^\n]*zero_area_patch.nff:18: patch: has fewer than 3 distinct vertices: skipped"
+    --scene "${CMAKE_CURRENT_SOURCE_DIR}/scene_files/zero_area_patch.nff" --stats
+    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_zero_area_patch.png")
+endforeach()
+# A chapter that shades mirrors and glass opaque says so (spheres.nff has both).
+foreach(chapter 04_shadow_feelers 05_soft_shadows 06_depth_of_field 07_uniform_grid)
+  rt_expect_exit(${chapter}.scene_says_what_it_does_not_model ${chapter} 0
+    "${chapter}: note: [^\n]*spheres.nff: [1-9][0-9]* mirror \\(Ks > 0\\) and [1-9][0-9]* glass \\(T > 0\\) materials are shaded opaque"
+    --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 16
+    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_opaque_note.png")
+endforeach()
 rt_expect_exit(02_spheres_triangles.scene_file_resolution 02_spheres_triangles 0 "rays_primary=160000\n"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --stats
   --out "${CMAKE_CURRENT_BINARY_DIR}/programs/02_spheres_triangles_file_resolution.png")
@@ -113,6 +139,24 @@ rt_expect_exit(04_shadow_feelers.classic_offset 04_shadow_feelers 2 "--offset an
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --classic --offset none)
 rt_expect_exit(04_shadow_feelers.classic_spp 04_shadow_feelers 2 "--classic shoots one eye ray through each pixel corner: --spp must be 1, got 4"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --classic --spp 4)
+set(many_lights "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.1\nresolution 8 8\nf 1 1 1 1 0 0 0 0\ns 0 0 0 1\n")
+foreach(k RANGE 1 300)
+  string(APPEND many_lights "l ${k} 10 10\n")
+endforeach()
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/programs/many_lights.nff" "${many_lights}")
+rt_expect_exit(05_soft_shadows.too_many_lights 05_soft_shadows 2
+  "many_lights.nff: 300 lights; chapter 05 samples every light at every hit and takes at most 256"
+  --scene "${CMAKE_CURRENT_BINARY_DIR}/programs/many_lights.nff")
+rt_expect_exit(04_shadow_feelers.image_too_large 04_shadow_feelers 2
+  "an image of 16384 x 16384 pixels needs about 3221 MB of colour; the limit is 33554432 pixels" --width 16384 --height 16384)
+rt_expect_exit(04_shadow_feelers.scene_image_too_large 04_shadow_feelers 2 "an image of 16384 x 8192 pixels"
+  --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 16384 --height 8192)
+rt_expect_exit(04_shadow_feelers.unwritable_out_before_render 04_shadow_feelers 2
+  "/proc/no/such/folder/x.png: cannot write the PNG file" --width 4000 --height 4000 --spp 64 --out /proc/no/such/folder/x.png)
+rt_expect_exit(04_shadow_feelers.unwritable_csv_before_sweep 04_shadow_feelers 2
+  "/proc/no/such/folder/x.csv: cannot write the CSV file" --sweep --csv /proc/no/such/folder/x.csv)
+rt_expect_exit(07_uniform_grid.unwritable_heatmap_before_render 07_uniform_grid 2
+  "/proc/no/such/folder/h.png: cannot write the PNG file" --heatmap /proc/no/such/folder/h.png)
 rt_expect_exit(05_soft_shadows.light_size_without_scene 05_soft_shadows 2 "--light-size sizes a scene file's lights" --light-size 0.2)
 
 # The classic NFF test rules, their counts worked by hand in each scene file's comments.

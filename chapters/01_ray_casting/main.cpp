@@ -2,6 +2,7 @@
 // measures what samples per pixel cost and buy.
 #include "01_ray_casting/figure.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/trade.hpp"
 
@@ -66,6 +67,7 @@ int main(int argc, char** argv)
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep(o);
             return 0;
         }

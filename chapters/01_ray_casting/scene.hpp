@@ -1,5 +1,5 @@
 // Chapter 01's scene: discs, and planes as discs of infinite radius. That is all the figure needs
-// (DESIGN.md: model only what a scene requires).
+// (the kit models only what a scene requires).
 #pragma once
 
 #include "common/vec.hpp"

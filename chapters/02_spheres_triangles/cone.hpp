@@ -71,7 +71,7 @@ inline std::optional<float> hit_cone(const Ray& ray, const Cone& cone, Interval 
         return std::nullopt;
 
     // In double: c below subtracts two numbers of size D^2 for a cone at distance D and cancels to
-    // size r^2, exactly like the slide's sphere (NUMERICS.md, "Ray/sphere"). *Measured* with these
+    // size r^2, exactly like the slide's sphere (this chapter's lesson, "Why the slide's sphere fails far away"). *Measured* with these
     // steps in float, rays aimed within 1.5 r of a cone: 0.04%, 3.1% and 44% wrong hit/miss answers
     // at D = 1e2, 1e3, 1e4. Double keeps about eight digits of c at 1e4, none wrong.
     const auto [base, k, H, r_b, s] = cone_detail::frame(cone);

@@ -1,8 +1,8 @@
 // The exact answers the chapter measures its tests against: the same shapes and rays, solved in
 // long double (a 64-bit significand on x86-64, 11 bits more than double and 40 more than float)
 // and by formulas that do not cancel. The stability tests and the program's trade table both judge
-// float and double answers by these (NUMERICS.md: "Results in float are compared with a double or
-// exact reference").
+// float and double answers by these: a float result is judged against an exact one, never against
+// another float.
 //
 // Where long double is only double (MSVC, Apple's ARM), the references for float stay far more
 // precise than what they judge, but the table's double rows then measure double against itself.

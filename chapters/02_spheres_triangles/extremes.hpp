@@ -1,4 +1,5 @@
-// The extreme cases of NUMERICS.md as rays and shapes, and how a test's answers on them are scored
+// The extreme cases where the chapter's formulas break (distant, tiny and huge spheres; rays aimed at
+// a mesh's shared edges and vertices; degenerate triangles) as rays and shapes, and how a test's answers on them are scored
 // against the exact ones (exact.hpp). The stability tests assert on these scores; the program's
 // trade table (--sweep) prints them for every test in float and in double.
 //
@@ -53,7 +54,7 @@ struct SphereProbe {
     BasicSphere<T> sphere;
 };
 
-// NUMERICS.md's setup: a sphere of radius r whose centre lies at distance D from an eye at the
+// The lesson's setup for distant spheres: a sphere of radius r whose centre lies at distance D from an eye at the
 // origin, in a random direction, and a ray aimed at a random point within 1.2 r of the centre
 // (on the disc facing the eye): about 69% of the rays hit.
 template <class T>
@@ -71,7 +72,8 @@ std::vector<SphereProbe<T>> distant_spheres(float distance, float radius, int co
 }
 
 // A sphere of radius 1e4 seen from 1 unit above its surface, rays in every direction: those that
-// dip below the horizon hit. Its c = |f|^2 - r^2 still cancels (NUMERICS.md).
+// dip below the horizon hit. Its c = |f|^2 - r^2 still cancels: two numbers of size 1e8 whose
+// difference is of size 1e4.
 template <class T>
 std::vector<SphereProbe<T>> huge_sphere(int count, std::uint64_t seed)
 {

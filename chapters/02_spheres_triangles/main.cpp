@@ -5,6 +5,7 @@
 #include "02_spheres_triangles/figure.hpp"
 #include "02_spheres_triangles/nff_scene.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
@@ -226,6 +227,7 @@ int main(int argc, char** argv)
         const ShapeTests tests = tests_named(o);
         check_scene_without_sweep(o.scene, o.sweep);
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep(o);
             return 0;
         }

@@ -1,6 +1,6 @@
 // Chapter 02's scene: spheres and triangles, each with its colour; triangles also carry their
 // corners' normals so meshes of curved surfaces can be shaded smoothly. That is all the figure
-// needs (DESIGN.md: model only what a scene requires). Scene files (NFF) also hold open cones and
+// needs (the kit models only what a scene requires). Scene files (NFF) also hold open cones and
 // cylinders, so the scene has a third array for them (cone.hpp); the figure has none.
 //
 // The shapes sit in flat arrays of geometry only (what the intersection tests read); what shading

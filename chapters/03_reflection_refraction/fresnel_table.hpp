@@ -3,7 +3,7 @@
 // difference over the angles of incidence from 0 to 90 degrees, the angle where it occurs, and
 // what each formula costs per call (the median of several passes). Leaving, it is measured twice:
 // with the cosine the approximation asks for (cos_t, EXERCISE 03.4), and with cos_i, the classic
-// bug (NUMERICS.md).
+// bug of a popular ray-tracing book (its error reaches 0.94 just below the critical angle).
 #pragma once
 
 #include "03_reflection_refraction/03_reflection_refraction.hpp"

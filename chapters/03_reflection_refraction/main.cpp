@@ -6,6 +6,7 @@
 #include "03_reflection_refraction/nff_scene.hpp"
 #include "03_reflection_refraction/rounds.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
@@ -182,6 +183,7 @@ int main(int argc, char** argv)
             });
         }
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep_render(o);
             sweep_fresnel(o);
             std::cout << "\nwrote " << o.csv << " and its _weight, _settings and _schlick siblings\n";

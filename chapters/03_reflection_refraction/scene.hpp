@@ -1,7 +1,7 @@
 // Chapter 03's scene: chapter 02's spheres and triangles (and cones, from scene files), each with
 // what Whitted's shading reads of it (a mirror's share, a glass's share and index of refraction, a
 // floor's checkers), one directional light, and an ambient term. That is all the figure needs
-// (DESIGN.md: model only what a scene requires): no point lights and no shadows yet, those are
+// (the kit models only what a scene requires): no point lights and no shadows yet, those are
 // chapter 04's lesson.
 //
 // The geometry and the diffuse colours stay in chapter 02's ShapeScene, so chapter 02's

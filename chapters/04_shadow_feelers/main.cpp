@@ -6,6 +6,7 @@
 #include "04_shadow_feelers/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
@@ -268,7 +269,9 @@ int main(int argc, char** argv)
         add_common_options(cli, o.common);
         cli.option("--offset", o.offset, "how feelers leave the surface: none, t-min, normal or robust");
         cli.option("--feelers", o.feelers, "the shadow query: any-hit, closest-hit or off (no shadows)");
-        cli.option("--scale", o.scale, "multiply every length of the scene and camera by this", 0.0f, 1e7f);
+        // Below 1e-7 the camera's squared lengths (1e-60 at S = 1e-30) underflow float; the kit's
+        // tables measure 1e-4 to 1e6.
+        cli.option("--scale", o.scale, "multiply every length of the scene and camera by this", 1e-7f, 1e7f);
         cli.flag("--sweep", o.sweep, "measure self-intersection by scale and offset, and what feelers cost");
         cli.option("--probes", o.probes, "feelers per scale and offset in the sweep", 1000, 100000000);
         cli.option("--repeat", o.repeat, "renders per feeler-cost row; the table gives the median", 1, 100);
@@ -291,6 +294,7 @@ int main(int argc, char** argv)
                 const classic::ClassicScene scene = classic::classic_scene(file.scene);
                 return write_figure(o.common, [&] { return classic::render_classic(file, scene); }, print_classic_stats);
             }
+            note_unmodelled_materials(file.scene, "04_shadow_feelers");
             const LitScene scene = lit_scene(file.scene);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng&) {
@@ -299,6 +303,7 @@ int main(int argc, char** argv)
             });
         }
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep(o);
             return 0;
         }

@@ -1,6 +1,6 @@
 // Chapter 04's scene: chapter 02's spheres and triangles (and cones, from scene files), a material
 // per object, point lights and an ambient light. That is all local shading with shadow feelers
-// reads (DESIGN.md: model only what a scene requires): a material has only the fields the shading
+// reads (the kit models only what a scene requires): a material has only the fields the shading
 // formula uses.
 //
 // The shapes sit in flat arrays of geometry only (what the intersection tests read); each shape

@@ -1,7 +1,7 @@
 // Self-intersection measured: how often a ray leaving a hit point re-finds its own surface, and how
 // often it jumps past a real occluder, for each way of starting it (Offset), on one scene scaled
 // from 1e-4 to 1e6. The program's table (--sweep) prints these rates; the stability tests assert
-// the kit's goal on them (NUMERICS.md: zero re-hits at every scale, an occluder 0.25 S above the
+// the kit's goal on them (zero re-hits at every scale, an occluder 0.25 S above the
 // surface still found).
 //
 // The scene at scale S, every length multiplied by S (so its coordinates grow with it, as a scene

@@ -7,7 +7,7 @@
 //   rectangle: centre + s axis_u + t axis_v for s, t in [-1, 1]: sides 2|axis_u| by 2|axis_v|;
 //   disc:      centre + x axis_u + y axis_v for x^2 + y^2 <= 1, with |axis_u| = |axis_v| its radius.
 // One struct with a shape tag, not a class per shape with a virtual call: the kit keeps its scenes
-// as plain structs in flat arrays (DESIGN.md).
+// as plain structs in flat arrays.
 //
 // The light glows on one side only, the side its normal n = normalize(axis_u x axis_v) faces (a
 // ceiling panel lights the room, not the attic), with the same radiance L_e in every direction on

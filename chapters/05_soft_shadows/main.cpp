@@ -5,6 +5,7 @@
 #include "05_soft_shadows/figure.hpp"
 #include "05_soft_shadows/nff_scene.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
@@ -164,6 +165,7 @@ int main(int argc, char** argv)
             throw InputError("--light-size sizes a scene file's lights: it needs --scene FILE.nff");
         if (!o.scene.empty()) {
             const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            note_unmodelled_materials(file.scene, "05_soft_shadows");
             const AreaLitScene scene = area_lit_scene(file.scene, o.light_size);
             return write_figure(o.common, [&] {
                 return render(file.settings, [&](float x, float y, Rng& rng) {
@@ -172,6 +174,7 @@ int main(int argc, char** argv)
             });
         }
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             if (grid_side(o.reference_samples) == 0)
                 throw InputError("--reference-samples must be a square (1, 4, 9, 16, ...), got " +
                                  std::to_string(o.reference_samples));

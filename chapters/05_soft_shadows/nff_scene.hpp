@@ -15,8 +15,17 @@ namespace rt {
 // smallest spheres, a tree's leaves) keep their dark cores.
 constexpr float nff_light_size = 0.05f;
 
+// Why 256: every hit sends light-samples feelers to every light, so the work grows as lights times
+// samples times pixels; 256 lights at the default 16 samples is already 4096 feelers per hit (a
+// 32 x 32 render of 100000 lights would take minutes). A file with more is refused, naming it.
+constexpr int max_area_lights = 256;
+
 inline AreaLitScene area_lit_scene(const NffScene& nff, float light_size = nff_light_size)
 {
+    if (nff.lights.size() > static_cast<size_t>(max_area_lights))
+        throw InputError(nff.name + ": " + std::to_string(nff.lights.size()) + " lights; chapter 05 samples every light "
+                         "at every hit and takes at most " + std::to_string(max_area_lights) +
+                         " (chapter 04 renders the file with point lights)");
     AreaLitScene scene{lit_scene(nff), {}};
     scene.lit.lights.clear();
     for (const NffLight& light : nff.lights) {

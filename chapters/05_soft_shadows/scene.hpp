@@ -1,7 +1,7 @@
 // Chapter 05's scene: chapter 04's (objects, materials, point lights, ambient light, background)
 // and area lights beside it. The area lights are not objects: no ray hits them, feelers run to
 // points on them, and a primary ray never sees them (the figure keeps them out of view). That is
-// all soft shadows need (DESIGN.md: model only what a scene requires).
+// all soft shadows need (the kit models only what a scene requires).
 //
 // Chapter 04's queries (closest_hit, the shadow feeler `occluded`) take `lit`, unchanged.
 #pragma once

@@ -4,6 +4,7 @@
 #include "06_depth_of_field/figure.hpp"
 #include "06_depth_of_field/nff_scene.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
@@ -123,6 +124,7 @@ int main(int argc, char** argv)
             // Focused on the view's `at` with the figure's ratio of aperture to focus, unless the
             // command line says otherwise.
             const SceneRender file = load_scene_render(o.scene, o.common, cli);
+            note_unmodelled_materials(file.scene, "06_depth_of_field");
             const FocusScene scene = focus_scene(file.scene);
             ThinLens lens = nff_lens(file.scene);
             if (cli.given("--focus"))
@@ -137,12 +139,13 @@ int main(int argc, char** argv)
             });
         }
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep(o);
             return 0;
         }
-        write_figure(o.common, [&] { return render_with(o, o.common.spp, o.common.seed); });
+        const int status = write_figure(o.common, [&] { return render_with(o, o.common.spp, o.common.seed); });
         if (o.common.stats)
             print_circles_of_confusion(std::cout, o);
-        return 0;
+        return status;
     });
 }

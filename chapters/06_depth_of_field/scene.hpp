@@ -1,7 +1,7 @@
 // Chapter 06's scene: chapter 04's lit scene as it is, since depth of field changes the camera and
 // not the scene, plus the one thing the figure needs to show blur on a flat floor: a checkerboard.
 // A plain floor has no edges to blur; its squares shrink with depth, so the floor shows the focus
-// falling off behind and in front of the plane of sharp focus (DESIGN.md: model only what a scene
+// falling off behind and in front of the plane of sharp focus (the kit models only what a scene
 // requires, and the figure requires this).
 #pragma once
 

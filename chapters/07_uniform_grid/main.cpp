@@ -6,6 +6,7 @@
 #include "04_shadow_feelers/classic.hpp"
 #include "07_uniform_grid/figure.hpp"
 #include "common/cli.hpp"
+#include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/random.hpp"
 #include "common/scene_file.hpp"
@@ -68,6 +69,8 @@ void print_structure_stats(std::ostream& out, const std::string& accel, int obje
 
 int render_program(const Options& o, const CommandLine& cli)
 {
+    if (!o.heatmap.empty())
+        check_writable(o.heatmap, "PNG");
     const Counter counter = heat_counter(o.heat_of);
     const bool figure = o.scene.empty();
     const SceneRender file = figure ? scene_render(ch07::figure_scene(), render_settings(o.common))
@@ -90,6 +93,8 @@ int render_program(const Options& o, const CommandLine& cli)
             return image;
         }, print);
     }
+    if (!figure)
+        note_unmodelled_materials(file.scene, "07_uniform_grid");
     LitScene scene = lit_scene(file.scene);
     const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene, o.lambda);
     scene.accelerator = accel.get();
@@ -334,6 +339,7 @@ int main(int argc, char** argv)
         check_scene_without_sweep(o.scene, o.sweep);
         classic::check_classic_options(o.classic, o.scene, o.common.spp);
         if (o.sweep) {
+            check_writable(o.csv, "CSV");
             sweep(o, cli);
             return 0;
         }

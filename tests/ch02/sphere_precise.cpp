@@ -1,5 +1,5 @@
 // EXERCISE 02.2: the precise sphere test (Ray Tracing Gems ch. 7), disc = r^2 - |f - bV|^2 and the
-// stable pair of roots q, c/q. Its stability cases are NUMERICS.md's sphere catalog and the kit's
+// stable pair of roots q, c/q. Its stability cases are the lesson's distant, tiny and huge spheres and the kit's
 // goal: at distance 1e4, fewer than 0.01% wrong answers and t within 2e-6.
 #include "tests/ch02/sphere_cases.hpp"
 

@@ -73,7 +73,7 @@ GRADED_TEST("fresnel_schlick: into a bubble of air in water (ior 1 / 1.333) the 
 STABILITY_TEST("fresnel_schlick: within 0.06 (water), 0.037 (glass), 0.075 (diamond) of the exact reflectance at every angle, both ways, never a NaN", "03.4", 2)
 {
     // Schlick's worst error, measured with the right cosine, is the same entering and leaving:
-    // 0.059, 0.036 and 0.074 (NUMERICS.md; the chapter's --sweep measures it again).
+    // 0.059, 0.036 and 0.074 (the chapter's --sweep measures them).
     struct Case {
         float ior;
         double bound;

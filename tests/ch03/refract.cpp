@@ -122,7 +122,7 @@ STABILITY_TEST("refract: exactly at the critical angle (48.61, 41.81, 24.62 degr
     }
 }
 
-STABILITY_TEST("refract: ior = 1 leaves every ray undeflected (to 1.35e-5, NUMERICS.md), entering and leaving, 0 to 89.9 degrees", "03.2", 2)
+STABILITY_TEST("refract: ior = 1 leaves every ray undeflected (to 1.35e-5), entering and leaving, 0 to 89.9 degrees", "03.2", 2)
 {
     double worst = 0.0;
     for (const Frame& f : {floor_frame, tilted_frame})

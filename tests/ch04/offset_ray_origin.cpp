@@ -1,5 +1,5 @@
 // EXERCISE 04.3: Wachter and Binder's robust offset of a ray's origin (Ray Tracing Gems ch. 6).
-// Its stability cases are NUMERICS.md's goal: no re-hit at any scale from 1e-4 to 1e6, and an
+// Its stability cases are the kit's goal: no re-hit at any scale from 1e-4 to 1e6, and an
 // occluder 0.25 S above the surface still found.
 #include "tests/ch04/describe.hpp"
 

@@ -196,7 +196,7 @@ struct Agreement {
 
 // Why 2^-23: the returned t is hit_cone's double t rounded to float, at most 2^-24 relative; the
 // double t's own error is about kappa 2^-53 for a root of condition kappa ~ (D / r)^2, under 2^-26
-// for D / r <= 1e4 (NUMERICS.md's distances) away from the outline. One more 2^-24 covers it.
+// for D / r <= 1e4 (the distances of chapter 02's sphere table) away from the outline. One more 2^-24 covers it.
 constexpr double t_bound = 0x1p-23;
 
 // What every run of random rays must show against the reference: no wrong answer, few rays within

@@ -206,6 +206,19 @@ TEST_CASE("a concave NFF polygon becomes triangles covering exactly its area", "
     }
 }
 
+TEST_CASE("a polygon or patch with no area is skipped with a warning naming its line; a file of nothing else is refused", "[common]")
+{
+    const NffScene s = parse(lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n" + "pp 3\n0 0 0 0 0 1\n0 0 0 0 0 1\n1 0 0 0 0 1\n" +
+                             "s 0 0 0 1\n");
+    CHECK(s.spheres.size() == 1);
+    CHECK(s.triangles.empty());
+    CHECK(s.skipped_polygons == 2);
+    REQUIRE(s.warnings.size() == 2);
+    CHECK(s.warnings[0] == "t.nff:10: polygon: its vertices all lie on one line (no area): skipped");
+    CHECK(s.warnings[1] == "t.nff:14: patch: has fewer than 3 distinct vertices: skipped");
+    CHECK_THROWS_WITH(parse(lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n"), "t.nff:13: no objects (s, p, pp or c): nothing to render");
+}
+
 TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong", "[common]")
 {
     struct Case {
@@ -227,6 +240,13 @@ TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong"
         {lit + "p 4\n0 0 0\n1 0 0\n", "t.nff:12: polygon: the file ends before vertex 3 x"},
         {lit + "c\n0 0 0 1\n0 1 0\n", "t.nff:12: cone: the file ends before apex radius"},
         {lit + "f 1 1 1 1 0", "t.nff:10: material: the file ends before Shine"},
+        // Microsoft's spellings of NaN and infinity, refused where they stand, not read as 1 and a comment.
+        {lit + "s 0 0 0\n-1.#QNAN\ns 1 1 1 1\n",
+         "t.nff:11: sphere: radius must be a number, got '-1.#QNAN', Microsoft's spelling of NaN or infinity: what wrote the file computed no number there"},
+        {lit + "s 1.#INF 0 0 1\n",
+         "t.nff:10: sphere: center x must be a number, got '1.#INF', Microsoft's spelling of NaN or infinity: what wrote the file computed no number there"},
+        {lit + "s 0 0 0 -1.#IND00\n",
+         "t.nff:10: sphere: radius must be a number, got '-1.#IND00', Microsoft's spelling of NaN or infinity: what wrote the file computed no number there"},
         // The view.
         {"v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nresolution 8 8\nl 1 1 1\n",
          "t.nff:7: view: expected 'hither', got 'l'"},
@@ -280,8 +300,6 @@ TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong"
         {lit + "p 99999999999999999999\n", "t.nff:10: polygon: the vertex count is out of range, got '99999999999999999999'"},
         {lit + "p 10001\n", "t.nff:10: polygon: has 10001 vertices; the reader takes at most 10000"},
         {lit + "p\n", "t.nff:10: polygon: the file ends before the vertex count"},
-        {lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n", "t.nff:10: polygon: its vertices all lie on one line (no area)"},
-        {lit + "p 3\n0 0 0\n0 0 0\n1 0 0\n", "t.nff:10: polygon: has fewer than 3 distinct vertices"},
         {lit + "p 4\n0 0 0\n2 2 0\n2 0 0\n0 1 0\n", "t.nff:10: polygon: edges 1 and 3 cross (NFF polygons are simple)"},
         {lit + "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n",
          "t.nff:10: polygon: vertex 1 lies 0.204124 off the plane of the others (NFF polygons are planar)"},

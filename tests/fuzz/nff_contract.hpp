@@ -3,7 +3,7 @@
 // "NAME:LINE: what is wrong", with a line that exists in the input.
 //
 // Each check returns an empty string when the contract holds, and otherwise what broke, so a
-// failure says more than "it crashed" (STYLE.md: a fuzz test that only checks for crashes is a wart).
+// failure says more than "it crashed" (a fuzz test that only checks for crashes tells little).
 #pragma once
 
 #include "common/camera.hpp"
