@@ -165,7 +165,7 @@ set(classic_counts_two_mirrors "eye_rays=9\neye_hits=9\nreflect_rays=36\nrefract
 set(classic_counts_back_face "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=9\nsecondary_hits=0\n")
 set(classic_counts_total_internal_reflection "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n")
 set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
-set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
+set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
 set(classic_counts_light_behind "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
 foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall refraction_pane light_behind)
   foreach(chapter 04_shadow_feelers 07_uniform_grid)
@@ -173,6 +173,14 @@ foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_pa
       --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
       --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_classic_${scene}.png")
   endforeach()
+endforeach()
+# --two-sided (SPD's teapot rule): the near wall's back is seen, lit by the light on the eye's side.
+foreach(chapter 04_shadow_feelers 07_uniform_grid)
+  rt_expect_exit(${chapter}.classic_back_face_two_sided ${chapter} 0
+    "^eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n"
+    --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/back_face.nff" --classic --two-sided --stats
+    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_classic_two_sided.png")
+  rt_expect_exit(${chapter}.two_sided_without_classic ${chapter} 2 "--two-sided is a rule of --classic" --two-sided)
 endforeach()
 # A w x h image shoots (w + 1) x (h + 1) eye rays.
 rt_expect_exit(04_shadow_feelers.classic_corner_rays 04_shadow_feelers 0 "^eye_rays=651\n"

@@ -5,11 +5,16 @@
 //   - eye rays through the pixels' corners: a w x h image shoots (w + 1) x (h + 1) eye rays, and
 //     a pixel is the mean of its four corners;
 //   - a path is at most 5 rays deep, the eye ray counting as 1;
-//   - a reflection ray wherever Ks > 0 and a refraction ray wherever T > 0; under total internal
-//     reflection only the reflection ray, which then also carries T (no light gets through);
+//   - a reflection ray wherever the surface reflects or transmits (Ks > 0 or T > 0: SPD's rule 8,
+//     "all rays hitting reflective and transmitting objects spawn reflection rays"), and a
+//     refraction ray wherever T > 0; under total internal reflection only the reflection ray, which
+//     then also carries T (no light gets through). A glass of Ks = 0 still sends its reflection
+//     ray, of weight 0: SPD's statistics count it, and a tracer compared with them must too;
 //   - no shadow feeler toward a light the surface faces away from;
 //   - polygons one-sided, except where their material transmits (T > 0): a ray that meets an
-//     opaque polygon's back passes through it. Every object casts shadows, either side.
+//     opaque polygon's back passes through it. Every object casts shadows, either side. SPD's rule
+//     2 makes one exception, the teapot, whose loose lid shows back faces: `two_sided` (the
+//     programs' --two-sided) sees every polygon from both sides.
 // The shading is NFF's, with no falloff and no ambient term: for each light the surface sees,
 // Kd rgb (n.l) plus a white highlight Ks (n.h)^Shine (Blinn-Phong, EXERCISE 04.1), in the light's
 // colour; then Ks times the reflected colour and T times the refracted one.
@@ -39,8 +44,11 @@ constexpr int max_depth = 5;
 
 // What --classic needs of the other options (InputError otherwise): a scene file, and one sample
 // per pixel, since its eye rays go through the pixels' corners.
-inline void check_classic_options(bool classic, const std::string& scene, int spp)
+inline void check_classic_options(bool classic, const std::string& scene, int spp, bool two_sided = false)
 {
+    if (two_sided && !classic)
+        throw InputError("--two-sided is a rule of --classic (every polygon seen from both sides); the other modes "
+                         "already see both sides");
     if (classic && scene.empty())
         throw InputError("--classic renders a scene file by the classic NFF rules: it needs --scene FILE.nff");
     if (classic && spp != 1)
@@ -55,12 +63,12 @@ struct ClassicScene {
     std::vector<color> light_colours;    // per light of lit.lights: NFF's, with no falloff
 };
 
-inline ClassicScene classic_scene(const NffScene& nff)
+inline ClassicScene classic_scene(const NffScene& nff, bool two_sided = false)
 {
     ClassicScene scene{lit_scene(nff), nff.materials, {}, {}};
     scene.lit.ambient = color(0.0f);
     for (const NffTriangle& t : nff.triangles)
-        scene.one_sided.push_back(!(nff.materials[t.material].t > 0.0f));
+        scene.one_sided.push_back(!two_sided && !(nff.materials[t.material].t > 0.0f));
     for (const NffLight& light : nff.lights)
         scene.light_colours.push_back(nff_light_colour(nff, light));
     return scene;
@@ -99,7 +107,7 @@ inline color trace(const ClassicScene& scene, const Ray& ray, int depth)
     };
     const std::optional<vec3> refracted = m.t > 0.0f ? refract(ray.dir, hit->n, m.ior) : std::nullopt;
     const float k_reflect = m.ks + (m.t > 0.0f && !refracted ? m.t : 0.0f);  // total internal reflection
-    if (k_reflect > 0.0f) {
+    if (m.ks > 0.0f || m.t > 0.0f) {
         count(Counter::reflected_rays);
         c += k_reflect * follow(reflect(ray.dir, hit->n));
     }

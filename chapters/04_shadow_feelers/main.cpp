@@ -33,6 +33,7 @@ struct Options {
     std::string csv = "04_shadow_feelers.csv";
     std::string scene;
     bool classic = false;
+    bool two_sided = false;
 };
 
 const std::vector<std::pair<std::string, Offset>> offsets = {
@@ -278,11 +279,12 @@ int main(int argc, char** argv)
         cli.option("--csv", o.csv, "where --sweep writes its tables (*_missed.csv and *_cost.csv beside it)");
         add_scene_option(cli, o.scene);
         cli.flag("--classic", o.classic, "with --scene: the classic NFF test rules (corner rays, depth 5, SPD counts)");
+        cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const FeelerSettings feelers = feelers_named(o);
         check_scene_without_sweep(o.scene, o.sweep);
-        classic::check_classic_options(o.classic, o.scene, o.common.spp);
+        classic::check_classic_options(o.classic, o.scene, o.common.spp, o.two_sided);
         if (o.classic && (cli.given("--offset") || cli.given("--feelers")))
             throw InputError("--classic sends NFF's feelers, any-hit from the robust offset: --offset and --feelers "
                              "do not apply");
@@ -291,7 +293,7 @@ int main(int argc, char** argv)
         if (!o.scene.empty()) {
             const SceneRender file = load_scene_render(o.scene, o.common, cli);
             if (o.classic) {
-                const classic::ClassicScene scene = classic::classic_scene(file.scene);
+                const classic::ClassicScene scene = classic::classic_scene(file.scene, o.two_sided);
                 return write_figure(o.common, [&] { return classic::render_classic(file, scene); }, print_classic_stats);
             }
             note_unmodelled_materials(file.scene, "04_shadow_feelers");

@@ -26,6 +26,7 @@ struct Options {
     CommonOptions common;
     std::string scene;
     bool classic = false;
+    bool two_sided = false;
     std::string accel = "grid";
     float lambda = ch07::default_lambda;
     std::string heatmap;
@@ -77,7 +78,7 @@ int render_program(const Options& o, const CommandLine& cli)
                                     : load_scene_render(o.scene, o.common, cli);
     const int width = file.settings.width, height = file.settings.height;
     if (o.classic) {
-        classic::ClassicScene scene = classic::classic_scene(file.scene);
+        classic::ClassicScene scene = classic::classic_scene(file.scene, o.two_sided);
         const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene.lit, o.lambda);
         scene.lit.accelerator = accel.get();
         const int objects = objects_of(scene.lit, lit_tests).size();
@@ -322,6 +323,7 @@ int main(int argc, char** argv)
         add_common_options(cli, o.common);
         add_scene_option(cli, o.scene);
         cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
+        cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
         cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
         cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
         cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
@@ -337,7 +339,7 @@ int main(int argc, char** argv)
         if (o.accel == "brute" && cli.given("--lambda"))
             throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
         check_scene_without_sweep(o.scene, o.sweep);
-        classic::check_classic_options(o.classic, o.scene, o.common.spp);
+        classic::check_classic_options(o.classic, o.scene, o.common.spp, o.two_sided);
         if (o.sweep) {
             check_writable(o.csv, "CSV");
             sweep(o, cli);
