@@ -6,9 +6,8 @@
 // tests a few dozen, most of them on the slopes the ray actually passes.
 #pragma once
 
-#include "04_shadow_feelers/figure.hpp"
-#include "04_shadow_feelers/nff_scene.hpp"
 #include "07_uniform_grid/grid.hpp"
+#include "07_uniform_grid/scene_program.hpp"
 #include "common/heatmap.hpp"
 #include "common/nff.hpp"
 #include "common/scene_file.hpp"
@@ -37,24 +36,13 @@ inline NffScene generated_scene(void (*write)(std::ostream&, int), int depth, co
 inline NffScene figure_scene() { return generated_scene(write_mountain, figure_mountain_depth, "mountain, depth 7"); }
 
 // A scene's accelerator by name: none (brute force) or the grid; the program's --accel.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const LitScene& scene, float lambda)
+inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda)
 {
     if (name == "brute")
         return nullptr;
     if (name == "grid")
-        return std::make_unique<UniformGrid>(objects_of(scene, lit_tests), lambda);
+        return std::make_unique<UniformGrid>(objects, lambda);
     throw InputError("--accel takes brute or grid, got '" + name + "'");
-}
-
-// Chapter 04's render of a scene file (its radiance: shading with feelers), through whatever
-// accelerator the scene holds; with `cost`, also what each pixel cost.
-inline Image render_lit(const SceneRender& file, const LitScene& scene, const FeelerSettings& feelers,
-                        CostMap* cost = nullptr)
-{
-    const auto radiance = [&](float x, float y, Rng&) {
-        return ch04::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), feelers);
-    };
-    return cost ? render(file.settings, with_cost(*cost, radiance)) : render(file.settings, radiance);
 }
 
 // The figure's scene through the grid, lambda cells per object; with `cost`, what each pixel cost.

@@ -3,7 +3,6 @@
 // classic NFF rules (--classic), through brute force or the grid (--accel); --heatmap writes what
 // each pixel cost. --sweep measures the trade: the grid's density lambda against build time,
 // bytes, tests, cells and render time, and brute force against the grid as the scene grows.
-#include "04_shadow_feelers/classic.hpp"
 #include "07_uniform_grid/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
@@ -24,31 +23,13 @@ namespace {
 
 struct Options {
     CommonOptions common;
-    std::string scene;
-    bool classic = false;
-    bool two_sided = false;
+    SceneOptions scene;
     std::string accel = "grid";
     float lambda = ch07::default_lambda;
-    std::string heatmap;
-    std::string heat_of = "tests";
     bool sweep = false;
     int repeat = 5;
     std::string csv = "07_uniform_grid.csv";
 };
-
-Counter heat_counter(const std::string& name)
-{
-    if (name == "tests")
-        return Counter::intersection_tests;
-    if (name == "cells")
-        return Counter::cells_visited;
-    throw InputError("--heat-of takes tests or cells, got '" + name + "'");
-}
-
-std::string heat_caption(Counter c)
-{
-    return c == Counter::cells_visited ? "cells visited per pixel" : "intersection tests per pixel";
-}
 
 // The --stats lines of the structure, after the render's own.
 void print_structure_stats(std::ostream& out, const std::string& accel, int objects, const UniformGrid* grid,
@@ -68,51 +49,16 @@ void print_structure_stats(std::ostream& out, const std::string& accel, int obje
         << "build_seconds=" << s.build_seconds << '\n';
 }
 
-int render_program(const Options& o, const CommandLine& cli)
+SceneProgram scene_program(const Options& o)
 {
-    if (!o.heatmap.empty())
-        check_writable(o.heatmap, "PNG");
-    const Counter counter = heat_counter(o.heat_of);
-    const bool figure = o.scene.empty();
-    const SceneRender file = figure ? scene_render(ch07::figure_scene(), render_settings(o.common))
-                                    : load_scene_render(o.scene, o.common, cli);
-    const int width = file.settings.width, height = file.settings.height;
-    if (o.classic) {
-        classic::ClassicScene scene = classic::classic_scene(file.scene, o.two_sided);
-        const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene.lit, o.lambda);
-        scene.lit.accelerator = accel.get();
-        const int objects = objects_of(scene.lit, lit_tests).size();
-        CostMap corners(width + 1, height + 1, counter);
-        const auto print = [&](std::ostream& out, const Counts& counts, double seconds) {
-            print_classic_stats(out, counts, seconds);
-            print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel.get()), counts);
-        };
-        return write_figure(o.common, [&] {
-            const Image image = classic::render_classic(file, scene, o.heatmap.empty() ? nullptr : &corners);
-            if (!o.heatmap.empty())
-                write_png(o.heatmap, heat_image(classic::pixel_cost_of_corners(corners), heat_caption(counter)));
-            return image;
-        }, print);
-    }
-    if (!figure)
-        note_unmodelled_materials(file.scene, "07_uniform_grid");
-    LitScene scene = lit_scene(file.scene);
-    const std::unique_ptr<Accelerator> accel = ch07::make_accelerator(o.accel, scene, o.lambda);
-    scene.accelerator = accel.get();
-    const int objects = objects_of(scene, lit_tests).size();
-    const auto print = [&](std::ostream& out, const Counts& counts, double seconds) {
-        print_stats(out, counts, seconds);
-        print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel.get()), counts);
-    };
-    return write_figure(o.common, [&] {
-        CostMap cost(width, height, counter);
-        const Image image = ch07::render_lit(file, scene, FeelerSettings{}, &cost);
-        const Image heat = heat_image(cost, heat_caption(counter));
-        if (!o.heatmap.empty())
-            write_png(o.heatmap, heat);
-        // The figure is the render with its heat map; a scene file is the render alone.
-        return figure ? side_by_side(image, heat) : image;
-    }, print);
+    return {"07_uniform_grid",
+            ch07::figure_scene,
+            {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
+             {"cells", Counter::cells_visited, "cells visited per pixel"}},
+            [&o](const Objects& objects) { return ch07::make_accelerator(o.accel, objects, o.lambda); },
+            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
+                print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel), counts);
+            }};
 }
 
 // --- The trade ---
@@ -148,7 +94,7 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, co
     std::vector<double> builds;
     for (int r = 0; r < (accel == "brute" ? 1 : runs); ++r) {
         const Timer timer;
-        structure = ch07::make_accelerator(accel, scene, lambda);
+        structure = ch07::make_accelerator(accel, objects_of(scene, lit_tests), lambda);
         builds.push_back(1e3 * timer.seconds());
     }
     m.build_ms = accel == "brute" ? 0.0 : median(builds);
@@ -158,7 +104,7 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, co
         m.bytes = grid->bytes();
     }
     reset_counters();
-    m.pixels = to_srgb8(ch07::render_lit(file, scene, FeelerSettings{}));
+    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
     const Counts counts = total_counts();
     m.rays = total_rays(counts);
     m.tests_per_ray = static_cast<double>(counted(counts, Counter::intersection_tests)) / static_cast<double>(m.rays);
@@ -166,7 +112,7 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, co
     std::vector<double> times;
     for (int r = 0; r < runs; ++r) {
         const Timer timer;
-        ch07::render_lit(file, scene, FeelerSettings{});
+        render_lit(file, scene, FeelerSettings{});
         times.push_back(1e3 * timer.seconds());
     }
     m.render_ms = median(times);
@@ -321,30 +267,26 @@ int main(int argc, char** argv)
         o.common.out = "07_uniform_grid.png";
         CommandLine cli("07_uniform_grid", "The uniform grid: a scene's rays walk its cells, testing only the objects there.");
         add_common_options(cli, o.common);
-        add_scene_option(cli, o.scene);
-        cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
-        cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
+        const SceneProgram program = scene_program(o);
+        add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
         cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
-        cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
-        cli.option("--heat-of", o.heat_of, "what the heat map counts: tests (intersection tests) or cells (visited)");
         cli.flag("--sweep", o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade");
         cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        heat_counter(o.heat_of);
         if (o.accel != "grid" && o.accel != "brute")
             throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
         if (o.accel == "brute" && cli.given("--lambda"))
             throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
-        check_scene_without_sweep(o.scene, o.sweep);
-        classic::check_classic_options(o.classic, o.scene, o.common.spp, o.two_sided);
+        check_scene_without_sweep(o.scene.scene, o.sweep);
+        check_scene_program_options(program, o.scene, o.common);
         if (o.sweep) {
             check_writable(o.csv, "CSV");
             sweep(o, cli);
             return 0;
         }
-        return render_program(o, cli);
+        return render_scene_program(program, o.common, o.scene, cli);
     });
 }

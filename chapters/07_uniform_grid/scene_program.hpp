@@ -1,0 +1,137 @@
+// What every program from chapter 07 on does besides its sweep: render its figure (a generated
+// scene, beside the heat map of what each pixel cost) or a scene file (--scene), with chapter 04's
+// shading and shadow feelers or by the classic NFF rules (--classic), through the accelerator its
+// options name; --heatmap writes the heat map, --stats adds the structure's own lines. Each
+// chapter says what its figure is, how to build its accelerators and what to print of them.
+#pragma once
+
+#include "04_shadow_feelers/classic.hpp"
+#include "04_shadow_feelers/figure.hpp"
+#include "04_shadow_feelers/nff_scene.hpp"
+#include "common/cli.hpp"
+#include "common/heatmap.hpp"
+#include "common/output.hpp"
+#include "common/png.hpp"
+#include "common/scene_file.hpp"
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rt {
+
+// The options the scene programs share.
+struct SceneOptions {
+    std::string scene;
+    bool classic = false;
+    bool two_sided = false;
+    std::string heatmap;
+    std::string heat_of;  // a name from SceneProgram::heat; empty: its first
+};
+
+struct SceneProgram {
+    std::string name;                  // the program's, for messages
+    std::function<NffScene()> figure;  // the figure's scene, generated
+    // What a heat map may count (--heat-of): a name, the counter, its caption. The first is the default.
+    struct Heat {
+        std::string name;
+        Counter counter;
+        std::string caption;
+    };
+    std::vector<Heat> heat;
+    // The accelerator for a scene's objects (nullptr: brute force), and its --stats lines.
+    std::function<std::unique_ptr<Accelerator>(const Objects&)> make;
+    std::function<void(std::ostream&, const Accelerator*, int objects, const Counts&)> print;
+};
+
+inline void add_scene_program_options(CommandLine& cli, SceneOptions& o, const SceneProgram& program)
+{
+    add_scene_option(cli, o.scene);
+    cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
+    cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
+    cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
+    std::string names;
+    for (const SceneProgram::Heat& h : program.heat)
+        names += (names.empty() ? "" : ", ") + h.name;
+    cli.option("--heat-of", o.heat_of, "what the heat map counts: " + names);
+}
+
+inline const SceneProgram::Heat& heat_named(const SceneProgram& program, const std::string& name)
+{
+    std::string names;
+    for (const SceneProgram::Heat& h : program.heat) {
+        if (name.empty() || h.name == name)
+            return h;
+        names += (names.empty() ? "" : ", ") + h.name;
+    }
+    throw InputError("--heat-of takes " + names + ", got '" + name + "'");
+}
+
+// Checks the options against each other before any work (InputError otherwise).
+inline void check_scene_program_options(const SceneProgram& program, const SceneOptions& o, const CommonOptions& common)
+{
+    heat_named(program, o.heat_of);
+    classic::check_classic_options(o.classic, o.scene, common.spp, o.two_sided);
+}
+
+// Chapter 04's render of a scene file (its shading with feelers), through whatever accelerator the
+// scene holds; with `cost`, also what each pixel cost.
+inline Image render_lit(const SceneRender& file, const LitScene& scene, const FeelerSettings& feelers,
+                        CostMap* cost = nullptr)
+{
+    const auto radiance = [&](float x, float y, Rng&) {
+        return ch04::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), feelers);
+    };
+    return cost ? render(file.settings, with_cost(*cost, radiance)) : render(file.settings, radiance);
+}
+
+inline int render_scene_program(const SceneProgram& program, const CommonOptions& common, const SceneOptions& o,
+                                 const CommandLine& cli)
+{
+    if (!o.heatmap.empty())
+        check_writable(o.heatmap, "PNG");
+    const SceneProgram::Heat& heat = heat_named(program, o.heat_of);
+    const bool figure = o.scene.empty();
+    const SceneRender file = figure ? scene_render(program.figure(), render_settings(common))
+                                    : load_scene_render(o.scene, common, cli);
+    const int width = file.settings.width, height = file.settings.height;
+    const auto stats = [&](StatsPrinter base, const Accelerator* accel, int objects) {
+        return [=, &program](std::ostream& out, const Counts& counts, double seconds) {
+            base(out, counts, seconds);
+            program.print(out, accel, objects, counts);
+        };
+    };
+    if (o.classic) {
+        classic::ClassicScene scene = classic::classic_scene(file.scene, o.two_sided);
+        const Objects objects = objects_of(scene.lit, lit_tests);
+        const std::unique_ptr<Accelerator> accel = program.make(objects);
+        scene.lit.accelerator = accel.get();
+        CostMap corners(width + 1, height + 1, heat.counter);
+        return write_figure(common, [&] {
+            const Image image = classic::render_classic(file, scene, o.heatmap.empty() ? nullptr : &corners);
+            if (!o.heatmap.empty())
+                write_png(o.heatmap, heat_image(classic::pixel_cost_of_corners(corners), heat.caption));
+            return image;
+        }, stats(print_classic_stats, accel.get(), objects.size()));
+    }
+    if (!figure)
+        note_unmodelled_materials(file.scene, program.name);
+    LitScene scene = lit_scene(file.scene);
+    const Objects objects = objects_of(scene, lit_tests);
+    const std::unique_ptr<Accelerator> accel = program.make(objects);
+    scene.accelerator = accel.get();
+    return write_figure(common, [&] {
+        CostMap cost(width, height, heat.counter);
+        const Image image = render_lit(file, scene, FeelerSettings{}, &cost);
+        const Image map = heat_image(cost, heat.caption);
+        if (!o.heatmap.empty())
+            write_png(o.heatmap, map);
+        // The figure is the render with its heat map; a scene file is the render alone.
+        return figure ? side_by_side(image, map) : image;
+    }, stats(print_stats, accel.get(), objects.size()));
+}
+
+}  // namespace rt
