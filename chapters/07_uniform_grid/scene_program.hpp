@@ -47,27 +47,30 @@ struct SceneProgram {
     std::function<void(std::ostream&, const Accelerator*, int objects, const Counts&)> print;
 };
 
+// "a, b or c": the heat maps' names, for help and messages.
+inline std::string heat_names(const SceneProgram& program)
+{
+    std::string names;
+    for (size_t k = 0; k < program.heat.size(); ++k)
+        names += (k == 0 ? "" : k + 1 == program.heat.size() ? " or " : ", ") + program.heat[k].name;
+    return names;
+}
+
 inline void add_scene_program_options(CommandLine& cli, SceneOptions& o, const SceneProgram& program)
 {
     add_scene_option(cli, o.scene);
     cli.flag("--classic", o.classic, "the classic NFF test rules (corner rays, depth 5, SPD counts)");
     cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
     cli.option("--heatmap", o.heatmap, "also write a heat map of what each pixel cost to this PNG");
-    std::string names;
-    for (const SceneProgram::Heat& h : program.heat)
-        names += (names.empty() ? "" : ", ") + h.name;
-    cli.option("--heat-of", o.heat_of, "what the heat map counts: " + names);
+    cli.option("--heat-of", o.heat_of, "what the heat map counts: " + heat_names(program));
 }
 
 inline const SceneProgram::Heat& heat_named(const SceneProgram& program, const std::string& name)
 {
-    std::string names;
-    for (const SceneProgram::Heat& h : program.heat) {
+    for (const SceneProgram::Heat& h : program.heat)
         if (name.empty() || h.name == name)
             return h;
-        names += (names.empty() ? "" : ", ") + h.name;
-    }
-    throw InputError("--heat-of takes " + names + ", got '" + name + "'");
+    throw InputError("--heat-of takes " + heat_names(program) + ", got '" + name + "'");
 }
 
 // Checks the options against each other before any work (InputError otherwise).
