@@ -107,7 +107,19 @@ Image heat_image(const CostMap& map, const std::string& what, double top)
         const std::string text = label(top * t / ticks) + (t == ticks ? "+" : "");
         draw_text(image, x0 + bar + 8, j - 6, text, ink);
     }
-    draw_text(image, x0, bar_bottom + 14, what, ink, 1);
+    // The caption under the bar, in two lines when one would run past the image's edge.
+    std::string first = what, second;
+    std::vector<char> probe(what.begin(), what.end());
+    probe.push_back('\0');
+    if (x0 + stb_easy_font_width(probe.data()) > image.width) {
+        const size_t cut = what.rfind(' ', what.size() / 2 + 4);
+        if (cut != std::string::npos) {
+            first = what.substr(0, cut);
+            second = what.substr(cut + 1);
+        }
+    }
+    draw_text(image, x0, bar_bottom + 10, first, ink, 1);
+    draw_text(image, x0, bar_bottom + 20, second, ink, 1);
     return image;
 }
 

@@ -32,6 +32,7 @@ enum class Counter {
     // Counted by the acceleration structures (chapters 07-10), which report them in their own
     // --stats lines.
     cells_visited,
+    mailbox_hits,  // object tests answered from a mailbox (chapter 08), not counted as tests
     count_  // the number of counters, not a counter
 };
 

@@ -93,7 +93,7 @@ set(objects_cones 8)
 set(objects_concave 29)
 set(objects_patches 70)
 set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field
-  07_uniform_grid)
+  07_uniform_grid 08_mailboxing)
 foreach(chapter IN LISTS scene_chapters)
   foreach(scene IN LISTS kit_scenes)
     # 24 wide: the file's 400 x 400 keeps its aspect, so 24 x 24 = 576 eye rays.
@@ -120,7 +120,7 @@ foreach(chapter IN LISTS scene_chapters)
     --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_zero_area_patch.png")
 endforeach()
 # A chapter that shades mirrors and glass opaque says so (spheres.nff has both).
-foreach(chapter 04_shadow_feelers 05_soft_shadows 06_depth_of_field 07_uniform_grid)
+foreach(chapter 04_shadow_feelers 05_soft_shadows 06_depth_of_field 07_uniform_grid 08_mailboxing)
   rt_expect_exit(${chapter}.scene_says_what_it_does_not_model ${chapter} 0
     "${chapter}: note: [^\n]*spheres.nff: [1-9][0-9]* mirror \\(Ks > 0\\) and [1-9][0-9]* glass \\(T > 0\\) materials are shaded opaque"
     --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 16
@@ -168,14 +168,14 @@ set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nref
 set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
 set(classic_counts_light_behind "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
 foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall refraction_pane light_behind)
-  foreach(chapter 04_shadow_feelers 07_uniform_grid)
+  foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing)
     rt_expect_exit(${chapter}.classic_${scene} ${chapter} 0 "^${classic_counts_${scene}}"
       --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
       --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_classic_${scene}.png")
   endforeach()
 endforeach()
 # --two-sided (SPD's teapot rule): the near wall's back is seen, lit by the light on the eye's side.
-foreach(chapter 04_shadow_feelers 07_uniform_grid)
+foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing)
   rt_expect_exit(${chapter}.classic_back_face_two_sided ${chapter} 0
     "^eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n"
     --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/back_face.nff" --classic --two-sided --stats
@@ -238,3 +238,31 @@ rt_expect_exit(07_uniform_grid.lambda_too_dense 07_uniform_grid 2 "cells .* pass
   --lambda 5000 --width 8 --height 8)
 rt_expect_exit(07_uniform_grid.unknown_heat 07_uniform_grid 2 "--heat-of takes tests or cells, got 'time'" --heat-of time)
 rt_expect_exit(07_uniform_grid.classic_without_scene 07_uniform_grid 2 "--classic .* needs --scene FILE.nff" --classic)
+
+# Chapter 08: the grid with mailboxes renders brute force's picture and rays, and the grid's without
+# them, at 1 and 2 threads; on the kit's scenes and on long thin sticks (many cells per object).
+foreach(scene IN LISTS kit_scenes)
+  rt_same_render(08_mailboxing.mailboxes_as_brute_classic_${scene} 08_mailboxing FIRST --accel brute SECOND --accel grid
+    ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
+endforeach()
+foreach(mode plain classic)
+  set(extra "")
+  if(mode STREQUAL "classic")
+    set(extra --classic)
+  endif()
+  rt_same_render(08_mailboxing.mailboxes_on_off_${mode}_sticks 08_mailboxing FIRST --mailbox off SECOND --mailbox on
+    ARGS --width 64 --lambda 8 ${extra} GENERATE sticks --depth 2)
+  rt_same_render(08_mailboxing.mailboxes_threads_${mode}_sticks 08_mailboxing FIRST --threads 1 SECOND --threads 2
+    ARGS --width 64 --lambda 8 ${extra} GENERATE sticks --depth 2)
+endforeach()
+rt_same_render(08_mailboxing.mailboxes_as_brute_tree 08_mailboxing FIRST --accel brute SECOND --accel grid
+  ARGS --width 48 GENERATE tree --depth 3)
+rt_expect_exit(08_mailboxing.figure_stats 08_mailboxing 0
+  "rays_primary=600\n.*accel=grid\\+mailboxes\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=128032\n"
+  --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_stats.png")
+rt_expect_exit(08_mailboxing.no_answers_without_mailboxes 08_mailboxing 0 "tests_answered_by_mailboxes=0\n"
+  --width 30 --height 20 --stats --mailbox off --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_off.png")
+rt_expect_exit(08_mailboxing.unknown_mailbox 08_mailboxing 2 "--mailbox takes on or off, got 'yes'" --mailbox yes)
+rt_expect_exit(08_mailboxing.mailbox_with_brute 08_mailboxing 2 "--lambda and --mailbox set up the grid; they do not apply to --accel brute"
+  --accel brute --mailbox off)
+rt_expect_exit(08_mailboxing.unknown_heat 08_mailboxing 2 "--heat-of takes saved, tests or cells, got 'time'" --heat-of time)

@@ -55,12 +55,4 @@ inline Image render_through_grid(const RenderSettings& settings, float lambda = 
     return render_lit(file, scene, FeelerSettings{}, cost);
 }
 
-// The figure: the render, and beside it the heat map of intersection tests per pixel.
-inline Image render_figure(const RenderSettings& settings, float lambda = default_lambda)
-{
-    CostMap cost(settings.width, settings.height, Counter::intersection_tests);
-    const Image image = render_through_grid(settings, lambda, &cost);
-    return side_by_side(image, heat_image(cost, "intersection tests per pixel"));
-}
-
 }  // namespace rt::ch07

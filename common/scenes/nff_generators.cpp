@@ -230,6 +230,12 @@ std::vector<double> mountain_heights(int depth)
     return h;
 }
 
+// --- Sticks ---
+
+constexpr std::uint64_t sticks_seed = 1987;
+constexpr double sticks_length = 0.9;  // against a pile 2 wide: each stick spans many grid cells
+constexpr double sticks_width = 0.012;
+
 // The lights and view every generated scene shares, framing an object `size` across whose base
 // stands at the origin.
 void stage(NffWriter& w, double size, double height)
@@ -318,6 +324,32 @@ void write_mountain(std::ostream& out, int depth)
         w.sphere(c, 0.28);
 }
 
+void write_sticks(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("pick-up sticks, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    stage(w, 1.6, 1.0);
+    w.material(dvec3(0.5, 0.5, 0.55), 0.9, 0.0, 0.0);
+    w.floor(0.0, 4.0);
+    // Seeded, so the pile is the same everywhere: each stick a long thin triangle from one end to
+    // the other, lying at any angle within a box 2 wide and 1 high above the floor.
+    Rng rng(sticks_seed, 0);
+    const auto u = [&] { return static_cast<double>(rng.next_float()); };
+    const dvec3 colours[3] = {{0.85, 0.2, 0.15}, {0.95, 0.75, 0.2}, {0.2, 0.45, 0.85}};
+    const int count = 250 << depth;
+    for (int c = 0; c < 3; ++c) {
+        w.material(colours[c], 0.8, 0.2, 20.0);
+        for (int k = c; k < count; k += 3) {
+            const dvec3 centre(2.0 * u() - 1.0, 0.05 + 0.95 * u(), 2.0 * u() - 1.0);
+            const dvec3 along = around(dvec3(0.0, 1.0, 0.0), 360.0 * u(), 60.0 * (2.0 * u() - 1.0));
+            dvec3 side, unused;
+            basis(along, side, unused);
+            const dvec3 a = centre - 0.5 * sticks_length * along, b = centre + 0.5 * sticks_length * along;
+            w.polygon({a, b, b + sticks_width * side});
+        }
+    }
+}
+
 const std::vector<NffGenerator>& nff_generators()
 {
     // Depth limits: 597871 spheres, 262144 triangles, 88573 cones, 524288 triangles; each file tens of
@@ -327,6 +359,7 @@ const std::vector<NffGenerator>& nff_generators()
         {"pyramid", "a tetrahedron of four half-size tetrahedra, recursively (SPD's tetra)", 4, 8, write_pyramid},
         {"tree", "a trunk branching into three, recursively: cones, joints and leaves", 5, 10, write_tree},
         {"mountain", "a fractal terrain of 2 x 4^depth triangles with four balls (SPD's mount)", 6, 9, write_mountain},
+        {"sticks", "250 x 2^depth long thin triangles in a pile, each across many grid cells", 4, 12, write_sticks},
     };
     return generators;
 }

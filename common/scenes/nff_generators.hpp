@@ -37,6 +37,11 @@ void write_tree(std::ostream& out, int depth);
 // everywhere.
 void write_mountain(std::ostream& out, int depth);
 
+// A pile of pick-up sticks: 250 x 2^depth long thin triangles (each 0.9 long, 0.012 wide) at
+// random angles in a box 2 wide above a floor; seeded. Each stick crosses many cells of a grid,
+// the case mailboxing (chapter 08) is for.
+void write_sticks(std::ostream& out, int depth);
+
 // The generators above, for the program and the tests.
 const std::vector<NffGenerator>& nff_generators();
 

@@ -1,76 +1,12 @@
-// EXERCISE 07.6: the cell query, on a small grid built by hand: three cells of size 1 along x over
-// the box from (0, 0, 0) to (3, 1, 1), the ray from (-1, 0.5, 0.5) along +x. It enters cell 0 at
-// t = 1, cell 1 at t = 2, cell 2 at t = 3, and leaves the box at t = 4.
-#include "tests/ch07/describe.hpp"
+// EXERCISE 07.6: the cell query, on the small grid built by hand (hand_grid.hpp).
+#include "tests/ch07/hand_grid.hpp"
 
 using namespace rt;
 using namespace rt::grader;
 
 namespace {
 
-const Ray ray{{-1, 0.5f, 0.5f}, {1, 0, 0}};
-const Interval all{0.0f, infinity};
-
-// Objects 0-2 are spheres on the ray; 3-5 are one triangle thrice, across the ray in the plane
-// x = 1 (cell 0's far boundary), so all three are hit at exactly t = 2.
-const std::vector<Sphere> spheres = {
-    {{2.5f, 0.5f, 0.5f}, 0.2f},   // 0: hit at x = 2.3, t = 3.3 (in cell 2)
-    {{0.95f, 0.5f, 0.5f}, 0.2f},  // 1: hit at x = 0.75, t = 1.75 (in cell 0)
-    {{0.5f, 0.5f, 0.5f}, 0.2f},   // 2: hit at x = 0.3, t = 1.3 (in cell 0)
-};
-const Triangle across{{1, -1, -1}, {1, 3, -1}, {1, -1, 3}};
-const std::vector<Triangle> triangles = {across, across, across};
-
-Objects objects()
-{
-    Objects o;
-    o.spheres = spheres.data();
-    o.sphere_count = static_cast<int>(spheres.size());
-    o.triangles = triangles.data();
-    o.triangle_count = static_cast<int>(triangles.size());
-    o.tests = {SphereTest::precise, TriangleTest::watertight};
-    return o;
-}
-
-// The grid with `lists[c]` in cell c.
-Grid grid_of(const std::vector<std::vector<std::uint32_t>>& lists)
-{
-    Grid g;
-    g.shape = grid_shape({{0, 0, 0}, {3, 1, 1}}, {3, 1, 1});
-    g.cell_start = {0};
-    for (const auto& list : lists) {
-        g.object_index.insert(g.object_index.end(), list.begin(), list.end());
-        g.cell_start.push_back(static_cast<std::uint32_t>(g.object_index.size()));
-    }
-    return g;
-}
-
-// The walk in cell c, as start_walk and next_cell leave it there.
-GridWalk walk_in(int c, float range_max = infinity)
-{
-    GridWalk w;
-    w.missed = false;
-    w.p = c;
-    w.step_p[0] = 1;
-    w.t_first[0] = 2.0f;
-    w.t_delta[0] = 1.0f;
-    w.steps[0] = c;
-    w.t_max[0] = 2.0f + static_cast<float>(c);
-    w.t_enter = 1.0f + static_cast<float>(c);
-    w.t_end = std::min(4.0f, range_max);
-    w.t_range = range_max;
-    return w;
-}
-
-std::string show(const ObjectHit& h)
-{
-    if (h.object < 0)
-        return "no hit";
-    std::ostringstream s;
-    s.precision(9);
-    s << "object " << h.object << " at t = " << h.t;
-    return s.str();
-}
+using namespace rt::grader::hand_grid;
 
 struct Case {
     std::vector<std::vector<std::uint32_t>> lists;

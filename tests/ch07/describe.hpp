@@ -54,6 +54,16 @@ inline std::string show(const std::vector<int>& cells)
     return s.str();
 }
 
+inline std::string show(const ObjectHit& h)
+{
+    if (h.object < 0)
+        return "no hit";
+    std::ostringstream s;
+    s.precision(9);
+    s << "object " << h.object << " at t = " << h.t;
+    return s.str();
+}
+
 // A cell the segment crosses: its address and the t where the ray enters and leaves it.
 struct CrossedCell {
     int p;

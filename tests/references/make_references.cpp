@@ -9,6 +9,7 @@
 #include "tests/ch05/picture.hpp"
 #include "tests/ch06/picture.hpp"
 #include "tests/ch07/picture.hpp"
+#include "tests/ch08/picture.hpp"
 #include "tests/scenes/scene_pictures.hpp"
 
 #include <functional>
@@ -27,6 +28,7 @@ int main()
         {"05_soft_shadows", [] { return rt::pictures::ch05(rt::pictures::ch05_reference_spp); }},
         {"06_depth_of_field", rt::pictures::ch06},
         {"07_uniform_grid", rt::pictures::ch07},
+        {"08_mailboxing", rt::pictures::ch08},
     };
     for (const rt::pictures::ScenePicture& scene : rt::pictures::scene_pictures())
         pictures.emplace_back(scene.name, scene.render);

@@ -1,0 +1,39 @@
+// Chapter 08's figure: a pile of long thin sticks, each across many grid cells, rendered through
+// the grid with mailboxes, beside a heat map of the tests the mailboxes answered per pixel: the
+// tests a grid without them would have repeated.
+#pragma once
+
+#include "07_uniform_grid/figure.hpp"
+#include "08_mailboxing/mailbox_grid.hpp"
+
+#include <memory>
+#include <string>
+
+namespace rt::ch08 {
+
+constexpr int figure_sticks_depth = 5;  // 8000 sticks
+
+inline NffScene figure_scene() { return ch07::generated_scene(write_sticks, figure_sticks_depth, "sticks, depth 5"); }
+
+// The accelerator by name (--accel, --mailbox): brute force (none), or the grid with or without
+// mailboxes.
+inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, bool mailboxes, const Objects& objects,
+                                                     float lambda)
+{
+    if (name == "grid" && mailboxes)
+        return std::make_unique<MailboxGrid>(objects, lambda);
+    return ch07::make_accelerator(name, objects, lambda);
+}
+
+// The figure's scene through the grid with mailboxes; with `cost`, what each pixel cost.
+inline Image render_through_mailboxes(const RenderSettings& settings, float lambda = ch07::default_lambda,
+                                      CostMap* cost = nullptr)
+{
+    const SceneRender file = scene_render(figure_scene(), settings);
+    LitScene scene = lit_scene(file.scene);
+    const MailboxGrid grid(objects_of(scene, lit_tests), lambda);
+    scene.accelerator = &grid;
+    return render_lit(file, scene, FeelerSettings{}, cost);
+}
+
+}  // namespace rt::ch08

@@ -1,0 +1,249 @@
+// Chapter 08's program: renders the figure (a pile of sticks through the grid with mailboxes,
+// beside the heat map of the tests its mailboxes answered) or any NFF scene (--scene, --classic)
+// through brute force or the grid (--accel), with or without mailboxes (--mailbox). --sweep
+// measures the trade: tests and time saved by the mailboxes against the grid's density, by ray
+// kind (primary, shadow, secondary), on three scenes.
+#include "03_reflection_refraction/03_reflection_refraction.hpp"
+#include "04_shadow_feelers/04_shadow_feelers.hpp"
+#include "08_mailboxing/figure.hpp"
+#include "common/cli.hpp"
+#include "common/output.hpp"
+#include "common/trade.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    SceneOptions scene;
+    std::string accel = "grid";
+    std::string mailbox = "on";
+    float lambda = ch07::default_lambda;
+    bool sweep = false;
+    int repeat = 5;
+    std::string csv = "08_mailboxing.csv";
+};
+
+void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
+                           const Counts& counts)
+{
+    out << "accel=" << o.accel << (o.accel == "grid" ? (o.mailbox == "on" ? "+mailboxes" : "") : "") << '\n'
+        << "objects=" << objects << '\n'
+        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n'
+        << "tests_answered_by_mailboxes=" << counted(counts, Counter::mailbox_hits) << '\n';
+    const auto* mailboxed = dynamic_cast<const MailboxGrid*>(accel);
+    const auto* plain = dynamic_cast<const UniformGrid*>(accel);
+    const UniformGrid* grid = mailboxed ? &mailboxed->grid() : plain;
+    if (!grid)
+        return;
+    const GridStats& s = grid->stats();
+    out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+        << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
+        << "grid_bytes=" << s.bytes << '\n'
+        << "mailbox_bytes_per_thread=" << (mailboxed ? mailboxed->mailbox_bytes_per_thread() : 0) << '\n'
+        << "build_seconds=" << s.build_seconds << '\n';
+}
+
+SceneProgram scene_program(const Options& o)
+{
+    return {"08_mailboxing",
+            ch08::figure_scene,
+            {{"saved", Counter::mailbox_hits, "tests answered by mailboxes per pixel"},
+             {"tests", Counter::intersection_tests, "intersection tests per pixel"},
+             {"cells", Counter::cells_visited, "cells visited per pixel"}},
+            [&o](const Objects& objects) { return ch08::make_accelerator(o.accel, o.mailbox == "on", objects, o.lambda); },
+            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
+                print_structure_stats(out, o, objects, accel, counts);
+            }};
+}
+
+// --- The trade ---
+
+// The rays of one kind, each with the query it asks.
+struct RaySet {
+    std::string kind;  // primary, shadow, secondary
+    bool any_hit;
+    std::vector<Ray> rays;
+    std::vector<Interval> ranges;
+};
+
+// The scene's primary rays at the settings' size, the shadow feelers from their hits to every
+// light the surface faces (from the robust offset, EXERCISE 04.3), and one mirror ray from each
+// hit: the three kinds of ray a Whitted tracer sends.
+std::vector<RaySet> ray_sets(const SceneRender& file, const LitScene& scene)
+{
+    RaySet primary{"primary", false, {}, {}}, shadow{"shadow", true, {}, {}}, secondary{"secondary", false, {}, {}};
+    for (int j = 0; j < file.settings.height; ++j)
+        for (int i = 0; i < file.settings.width; ++i) {
+            const Ray ray = file.eye_ray(primary_ray(file.camera, static_cast<float>(i), static_cast<float>(j)));
+            primary.rays.push_back(ray);
+            primary.ranges.push_back({0.0f, infinity});
+            const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
+            if (!hit)
+                continue;
+            const vec3 n = glm::dot(hit->n, ray.dir) > 0.0f ? -hit->n : hit->n;
+            for (const PointLight& light : scene.lights) {
+                if (glm::dot(n, light.position - hit->p) <= 0.0f)
+                    continue;
+                const Feeler f = feeler(offset_ray_origin(hit->p, hit->n, light.position - hit->p), light.position, 0.0f);
+                shadow.rays.push_back(f.ray);
+                shadow.ranges.push_back(f.range);
+            }
+            const vec3 r = reflect(ray.dir, n);
+            secondary.rays.push_back({offset_ray_origin(hit->p, hit->n, r), r});
+            secondary.ranges.push_back({0.0f, infinity});
+        }
+    return {primary, shadow, secondary};
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Run {
+    double ms = 0.0;
+    std::uint64_t tests = 0, saved = 0;
+    std::vector<ObjectHit> answers;
+};
+
+// Every ray of the set through `accel`, on this thread: one counted pass that keeps the answers,
+// then `repeat` timed passes.
+Run run(const Accelerator& accel, const RaySet& set, const Objects& objects, int repeat)
+{
+    Run r;
+    reset_counters();
+    for (size_t k = 0; k < set.rays.size(); ++k) {
+        ObjectHit h;
+        if (set.any_hit)
+            h.object = accel.any(set.rays[k], set.ranges[k], objects) ? 1 : -1;
+        else if (!accel.closest(set.rays[k], set.ranges[k], objects, h))
+            h = ObjectHit{};
+        r.answers.push_back(h);
+    }
+    const Counts counts = total_counts();
+    r.tests = counted(counts, Counter::intersection_tests);
+    r.saved = counted(counts, Counter::mailbox_hits);
+    std::vector<double> times;
+    for (int rep = 0; rep < repeat; ++rep) {
+        const Timer timer;
+        for (size_t k = 0; k < set.rays.size(); ++k) {
+            ObjectHit h;
+            if (set.any_hit)
+                accel.any(set.rays[k], set.ranges[k], objects);
+            else
+                accel.closest(set.rays[k], set.ranges[k], objects, h);
+        }
+        times.push_back(1e3 * timer.seconds());
+    }
+    r.ms = median(times);
+    return r;
+}
+
+bool same_answers(const Run& a, const Run& b)
+{
+    if (a.answers.size() != b.answers.size())
+        return false;
+    for (size_t k = 0; k < a.answers.size(); ++k)
+        if (a.answers[k].object != b.answers[k].object || (a.answers[k].object >= 0 && a.answers[k].t != b.answers[k].t))
+            return false;
+    return true;
+}
+
+void sweep(const Options& o, const CommandLine& cli)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.show_progress = false;
+    if (!cli.given("--width"))
+        settings.width = 160;
+    if (!cli.given("--height"))
+        settings.height = 90;
+    std::cerr << "measuring what the mailboxes save, by density and ray kind, on three scenes...\n";
+    std::ofstream csv(o.csv);
+    csv << "scene,objects,lambda,references_per_object,kind,count,tests_per_ray_grid,tests_per_ray_mailboxes,"
+           "tests_saved_percent,ms_grid,ms_mailboxes,time_saved_percent\n";
+    std::cout << "\nthe grid with and without mailboxes, the same rays (" << settings.width << "x" << settings.height
+              << " primary rays, their shadow feelers and mirror rays), 1 thread, medians of " << o.repeat
+              << " runs; answers identical\n\n"
+              << "| scene | lambda | refs/object | rays | count | tests/ray | with mailboxes | tests saved | ms | ms with "
+                 "mailboxes | time saved |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const std::vector<NffScene> scenes = {ch08::figure_scene(),
+                                          ch07::generated_scene(write_mountain, 7, "mountain, depth 7"),
+                                          ch07::generated_scene(write_sphereflake, 4, "sphereflake, depth 4")};
+    for (const NffScene& nff : scenes) {
+        const SceneRender file = scene_render(nff, settings);
+        LitScene scene = lit_scene(file.scene);
+        const Objects objects = objects_of(scene, lit_tests);
+        const UniformGrid finder(objects, ch07::default_lambda);
+        scene.accelerator = &finder;
+        const std::vector<RaySet> sets = ray_sets(file, scene);
+        for (const float lambda : {1.0f, 4.0f, 16.0f, 64.0f}) {
+            const UniformGrid grid(objects, lambda);
+            const MailboxGrid mailboxed(objects, lambda);
+            const double refs = static_cast<double>(grid.stats().references) / objects.size();
+            for (const RaySet& set : sets) {
+                const Run a = run(grid, set, objects, o.repeat);
+                const Run b = run(mailboxed, set, objects, o.repeat);
+                if (!same_answers(a, b))
+                    throw std::runtime_error("the grid with mailboxes answered differently on " + nff.name + ": a bug of the kit");
+                const double n = static_cast<double>(std::max<size_t>(1, set.rays.size()));
+                const double saved = a.tests ? 100.0 * (1.0 - static_cast<double>(b.tests) / a.tests) : 0.0;
+                const double faster = 100.0 * (1.0 - b.ms / a.ms);
+                std::cout << std::fixed << "| " << nff.name << " | " << std::setprecision(0) << lambda << " | "
+                          << std::setprecision(2) << refs << " | " << set.kind << " | " << set.rays.size() << " | "
+                          << std::setprecision(1) << a.tests / n << " | " << b.tests / n << " | " << std::setprecision(0)
+                          << saved << "% | " << std::setprecision(1) << a.ms << " | " << b.ms << " | "
+                          << std::setprecision(0) << faster << "% |\n";
+                csv << '"' << nff.name << "\"," << objects.size() << ',' << lambda << ',' << refs << ',' << set.kind << ','
+                    << set.rays.size() << ',' << a.tests / n << ',' << b.tests / n << ',' << saved << ','
+                    << a.ms << ',' << b.ms << ',' << faster << '\n';
+            }
+        }
+    }
+    std::cout << "\nwrote " << o.csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("08_mailboxing", [&] {
+        Options o;
+        o.common.out = "08_mailboxing.png";
+        CommandLine cli("08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.");
+        add_common_options(cli, o.common);
+        const SceneProgram program = scene_program(o);
+        add_scene_program_options(cli, o.scene, program);
+        cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
+        cli.option("--mailbox", o.mailbox, "with the grid: on (a mailbox per object and thread) or off");
+        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
+        cli.flag("--sweep", o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
+        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        if (o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
+        if (o.mailbox != "on" && o.mailbox != "off")
+            throw InputError("--mailbox takes on or off, got '" + o.mailbox + "'");
+        if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--mailbox")))
+            throw InputError("--lambda and --mailbox set up the grid; they do not apply to --accel brute");
+        check_scene_without_sweep(o.scene.scene, o.sweep);
+        check_scene_program_options(program, o.scene, o.common);
+        if (o.sweep) {
+            check_writable(o.csv, "CSV");
+            sweep(o, cli);
+            return 0;
+        }
+        return render_scene_program(program, o.common, o.scene, cli);
+    });
+}

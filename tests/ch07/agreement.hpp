@@ -1,0 +1,131 @@
+// An accelerator against brute force (the tests of chapters 07 on): on seeded rays over a scene,
+// at several densities, it must answer every query as brute force does: the same object at the
+// same t, bit for bit, and the same any-hit answer.
+#pragma once
+
+#include "04_shadow_feelers/nff_scene.hpp"
+#include "common/random.hpp"
+#include "tests/ch07/describe.hpp"
+
+#include <functional>
+#include <memory>
+
+namespace rt::grader::agreement {
+
+
+struct Disagreement {
+    int rays = 0, wrong = 0;
+    std::string first;  // the first wrong answer, in words
+};
+
+inline std::string answer(bool found, const ObjectHit& h) { return found ? show(h) : "no hit"; }
+
+// What a test builds from a scene's objects at a density: the accelerator under test.
+using Build = std::function<std::unique_ptr<Accelerator>(const Objects&, float lambda)>;
+
+// `rays` seeded rays: half from the view's eye into its field of view, half from points in and
+// around the scene's box in any direction, some with a range that ends early.
+inline void compare(const Build& build, const LitScene& scene, const NffView& view, float lambda, int rays, std::uint64_t seed, Disagreement& d)
+{
+    const Objects objects = objects_of(scene, lit_tests);
+    const std::unique_ptr<Accelerator> built = build(objects, lambda);
+    const Accelerator& grid = *built;
+    Bounds box;
+    for (int k = 0; k < objects.size(); ++k)
+        box.grow(objects.bounds(k));
+    const vec3 e = box.extent();
+    Rng rng(seed, 3);
+    const auto u = [&] { return rng.next_float(); };
+    for (int k = 0; k < rays; ++k) {
+        Ray ray;
+        if (k % 2 == 0) {
+            const vec3 ahead = glm::normalize(view.at - view.from);
+            ray = {view.from, glm::normalize(ahead + 0.6f * vec3(2 * u() - 1, 2 * u() - 1, 2 * u() - 1))};
+        } else {
+            vec3 dir(2 * u() - 1, 2 * u() - 1, 2 * u() - 1);
+            if (u() < 0.1f)
+                dir[static_cast<int>(u() * 3)] = 0.0f;  // some rays parallel to a slab
+            if (dir == vec3(0.0f))
+                continue;
+            ray = {box.min - 0.25f * e + 1.5f * e * vec3(u(), u(), u()), glm::normalize(dir)};
+        }
+        const Interval range{u() < 0.5f ? 0.0f : 1e-4f, u() < 0.2f ? glm::length(e) * u() : infinity};
+        ObjectHit want, got;
+        const bool want_found = brute_force().closest(ray, range, objects, want);
+        const bool got_found = grid.closest(ray, range, objects, got);
+        const bool want_any = brute_force().any(ray, range, objects);
+        const bool got_any = grid.any(ray, range, objects);
+        ++d.rays;
+        const bool same = want_found == got_found && (!want_found || (want.object == got.object && want.t == got.t));
+        if (!same || want_any != got_any) {
+            if (d.wrong++ == 0) {
+                std::ostringstream s;
+                s << show(ray) << ", t in (" << range.min << ", " << range.max << "), lambda " << lambda
+                  << ": brute force finds " << answer(want_found, want) << " (any-hit " << want_any << "), the grid "
+                  << answer(got_found, got) << " (any-hit " << got_any << ")";
+                d.first = s.str();
+            }
+        }
+    }
+}
+
+inline void check_scene(const Build& build, const NffScene& nff, int rays_per_lambda)
+{
+    const LitScene scene = lit_scene(nff);
+    Disagreement d;
+    std::uint64_t seed = 11;
+    for (const float lambda : {0.3f, 2.0f, 9.0f})
+        compare(build, scene, nff.view, lambda, rays_per_lambda, ++seed, d);
+    INFO(nff.name << " (" << objects_of(scene, lit_tests).size() << " objects): " << d.wrong << " of " << d.rays
+         << " rays answered differently from brute force; the first: " << d.first);
+    CHECK(d.wrong == 0);
+}
+
+// Twin triangles (every tie to the lower number), a floor 1e4 across under 200 spheres of radius
+// 1e-3 (the floor is in every cell of its layer), and that scene 1e5 from the origin.
+inline void check_hard_cases(const Build& build)
+{
+    // Two copies of each triangle (object k and k + T): every tie goes to the lower number.
+    LitScene twins;
+    twins.add_material({});
+    Rng rng(5, 5);
+    std::vector<Triangle> tris;
+    for (int k = 0; k < 60; ++k) {
+        const point3 c(4 * rng.next_float(), 4 * rng.next_float(), 4 * rng.next_float());
+        tris.push_back({c, c + vec3(0.7f, 0.1f, 0), c + vec3(0, 0.6f, 0.5f)});
+    }
+    for (int copy = 0; copy < 2; ++copy)
+        for (const Triangle& t : tris)
+            twins.add_triangle(t, 0);
+    Disagreement d;
+    NffView view;
+    view.from = point3(2, 2, 12);
+    view.at = point3(2, 2, 2);
+    for (const float lambda : {0.5f, 4.0f})
+        compare(build, twins, view, lambda, 1500, 40, d);
+    INFO("twin triangles: " << d.wrong << " of " << d.rays << " rays answered differently; the first: " << d.first);
+    CHECK(d.wrong == 0);
+
+    // A floor 1e4 across under 200 spheres of radius 1e-3: the floor is in every cell of its layer.
+    for (const float offset : {0.0f, 1e5f}) {
+        LitScene mixed;
+        mixed.add_material({});
+        const point3 o(offset, 0, -offset);
+        mixed.add_triangle({o + point3(-5e3f, 0, -5e3f), o + point3(-5e3f, 0, 5e3f), o + point3(5e3f, 0, 5e3f)}, 0);
+        mixed.add_triangle({o + point3(-5e3f, 0, -5e3f), o + point3(5e3f, 0, 5e3f), o + point3(5e3f, 0, -5e3f)}, 0);
+        for (int k = 0; k < 200; ++k)
+            mixed.add_sphere({o + point3(rng.next_float(), 0.01f + rng.next_float(), rng.next_float()), 1e-3f}, 0);
+        Disagreement m;
+        NffView near;
+        near.from = o + point3(0.5f, 2, 3);
+        near.at = o + point3(0.5f, 0, 0.5f);
+        for (const float lambda : {1.0f, 16.0f})
+            compare(build, mixed, near, lambda, 2000, 50, m);
+        INFO("a floor under tiny spheres, offset by " << offset << ": " << m.wrong << " of " << m.rays
+             << " rays answered differently; the first: " << m.first);
+        CHECK(m.wrong == 0);
+    }
+}
+
+}  // namespace rt::grader::agreement
+

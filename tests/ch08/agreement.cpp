@@ -1,0 +1,98 @@
+// The grid with mailboxes as a whole (EXERCISES 08.1-08.3 with chapter 07's grid and walk):
+// brute force's answers on every ray; the grid's own answers with each object tested at most once
+// per ray; right across the signature counter's wrap.
+#include "07_uniform_grid/figure.hpp"
+#include "08_mailboxing/figure.hpp"
+#include "tests/ch07/agreement.hpp"
+
+#include <filesystem>
+#include <limits>
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::agreement;
+
+namespace {
+
+const Build mailboxed = [](const Objects& objects, float lambda) { return std::make_unique<MailboxGrid>(objects, lambda); };
+
+std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
+
+}  // namespace
+
+GRADED_TEST("the grid with mailboxes answers every ray as brute force does, on the kit's scenes and generated ones", "08.A", 4)
+{
+    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
+        if (entry.path().extension() == ".nff")
+            check_scene(mailboxed, read_nff(entry.path().string()), 800);
+    check_scene(mailboxed, ch07::generated_scene(write_sticks, 1, "sticks 1"), 800);
+    check_scene(mailboxed, ch07::generated_scene(write_tree, 3, "tree 3"), 500);
+    check_scene(mailboxed, ch07::generated_scene(write_mountain, 4, "mountain 4"), 500);
+}
+
+STABILITY_TEST("the grid with mailboxes answers as brute force does on ties, a huge floor and far from the origin", "08.A", 3)
+{
+    check_hard_cases(mailboxed);
+}
+
+GRADED_TEST("with mailboxes no object is tested twice by one ray: every cell reference is a test or an answer", "08.A", 4)
+{
+    const NffScene nff = ch07::generated_scene(write_sticks, 1, "sticks 1");
+    const LitScene scene = lit_scene(nff);
+    const Objects objects = objects_of(scene, lit_tests);
+    const UniformGrid plain(objects, 8.0f);
+    const MailboxGrid grid(objects, 8.0f);
+    Rng rng(21, 2);
+    int repeated = 0, rays = 0;
+    std::uint64_t plain_tests = 0, tests = 0, answers = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const point3 o(4 * rng.next_float() - 2, 1.5f * rng.next_float(), 4 * rng.next_float() - 2);
+        const vec3 d = glm::normalize(vec3(2 * rng.next_float() - 1, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1));
+        ObjectHit a, b;
+        reset_counters();
+        plain.closest({o, d}, {0.0f, infinity}, objects, a);
+        plain_tests += counter(Counter::intersection_tests);
+        reset_counters();
+        grid.closest({o, d}, {0.0f, infinity}, objects, b);
+        tests += counter(Counter::intersection_tests);
+        answers += counter(Counter::mailbox_hits);
+        ++rays;
+        repeated += a.object != b.object || a.t != b.t;
+    }
+    INFO(rays << " seeded rays through the sticks at 8 cells per object: without mailboxes " << plain_tests
+         << " tests; with them " << tests << " tests and " << answers << " answers from mailboxes (they must add up to "
+         << plain_tests << ", with fewer tests); " << repeated << " rays answered differently");
+    CHECK(repeated == 0);
+    CHECK(tests + answers == plain_tests);
+    CHECK(answers > 0);
+}
+
+GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature counter's wrap", "08.A", 4)
+{
+    const NffScene nff = ch07::generated_scene(write_sticks, 1, "sticks 1");
+    const LitScene scene = lit_scene(nff);
+    const Objects objects = objects_of(scene, lit_tests);
+    const MailboxGrid grid(objects, 8.0f);
+    // The first rays fill mailboxes with signatures 1, 2, ...; then the counter is moved to a few
+    // rays before its end, and the rays after the wrap get those small signatures again.
+    Rng rng(4, 4);
+    int wrong = 0;
+    std::string first;
+    for (int k = 0; k < 400; ++k) {
+        if (k == 200)
+            grid.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max() - 100;
+        const point3 o(4 * rng.next_float() - 2, 1.5f * rng.next_float(), 4 * rng.next_float() - 2);
+        const vec3 d = glm::normalize(vec3(2 * rng.next_float() - 1, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1));
+        ObjectHit want, got;
+        const bool w = brute_force().closest({o, d}, {0.0f, infinity}, objects, want);
+        const bool g = grid.closest({o, d}, {0.0f, infinity}, objects, got);
+        if (w != g || (w && (want.object != got.object || want.t != got.t))) {
+            if (wrong++ == 0)
+                first = "ray " + std::to_string(k) + ": brute force " + (w ? show(want) : "no hit") + ", the grid " +
+                        (g ? show(got) : "no hit");
+        }
+    }
+    INFO("400 rays, the signature counter set to 2^32 - 101 after the first 200: " << wrong
+         << " answered differently from brute force; the first: " << first);
+    CHECK(wrong == 0);
+}

@@ -1,0 +1,77 @@
+// EXERCISE 08.3: chapter 07's cell query through the mailboxes, on the small grid built by hand
+// (tests/ch07/hand_grid.hpp): the same answers, and no object tested twice by one ray.
+#include "08_mailboxing/mailbox_grid.hpp"
+#include "tests/ch07/hand_grid.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::hand_grid;
+
+namespace {
+
+std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
+
+Mailboxes fresh() { return Mailboxes{std::vector<Mailbox>(6), 0}; }
+
+}  // namespace
+
+GRADED_TEST("closest_in_cell_mailboxed: keeps the nearest hit inside the cell; a hit beyond it is left", "08.3", 4)
+{
+    const Grid grid = grid_of({{0, 1, 2}, {}, {0}});
+    Mailboxes m = fresh();
+    ObjectHit best;
+    const bool got = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
+    INFO("cell 0 lists spheres 0 (t = 3.3, beyond the cell), 1 (t = 1.75) and 2 (t = 1.3): returned " << std::boolalpha
+         << got << " with " << show(best) << ", expected sphere 2");
+    CHECK(got);
+    CHECK(best.object == 2);
+    ObjectHit none;
+    const bool beyond = closest_in_cell_mailboxed(grid_of({{0}, {}, {}}), walk_in(0), m, 2, ray, all, objects(), none);
+    INFO("cell 0 lists only sphere 0, hit at t = 3.3 beyond it: returned " << beyond << " with " << show(none));
+    CHECK(!beyond);
+    CHECK(none.object == -1);
+}
+
+GRADED_TEST("closest_in_cell_mailboxed: a far hit set aside in one cell is accepted from the mailbox in its own cell", "08.3", 4)
+{
+    // Sphere 0 (t = 3.3) is listed in cells 0 and 2: tested in cell 0, answered in cell 2.
+    const Grid grid = grid_of({{0}, {}, {0}});
+    Mailboxes m = fresh();
+    ObjectHit best;
+    reset_counters();
+    const bool in_0 = closest_in_cell_mailboxed(grid, walk_in(0), m, 5, ray, all, objects(), best);
+    const bool in_2 = closest_in_cell_mailboxed(grid, walk_in(2), m, 5, ray, all, objects(), best);
+    const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+    INFO("ray 5 in cell 0 then cell 2: returned " << std::boolalpha << in_0 << " then " << in_2 << " with " << show(best)
+         << " after " << tests << " tests and " << answers << " answers from the mailbox; expected false, then sphere 0 "
+         "from its mailbox (1 test, 1 answer): a far hit set aside must not mark the object as finished");
+    CHECK(!in_0);
+    CHECK(in_2);
+    CHECK(best.object == 0);
+    CHECK(tests == 1);
+    CHECK(answers == 1);
+}
+
+GRADED_TEST("the grid with mailboxes: a near object in a later cell beats a far one found earlier, tested once each", "08.3", 4)
+{
+    std::vector<Sphere> s = {{{2.5f, 0.5f, 0.5f}, 0.2f}, {{1.5f, 0.5f, 0.5f}, 0.2f}};
+    Objects o;
+    o.spheres = s.data();
+    o.sphere_count = 2;
+    const MailboxGrid grid(grid_of({{0}, {1}, {0}}), 2);
+    ObjectHit hit;
+    const bool found = grid.closest(ray, all, o, hit);
+    INFO("far sphere 0 (t = 3.3) in cells 0 and 2, near sphere 1 (t = 2.3) in cell 1: got "
+         << (found ? show(hit) : "no hit") << ", expected object 1");
+    CHECK(found);
+    CHECK(hit.object == 1);
+    // The far sphere listed in every cell, nothing else: found in the last, tested once.
+    reset_counters();
+    const MailboxGrid everywhere(grid_of({{0}, {0}, {0}}), 2);
+    const bool far = everywhere.closest(ray, all, o, hit);
+    INFO("sphere 0 alone, listed in cells 0, 1 and 2: got " << (far ? show(hit) : "no hit") << " after "
+         << counter(Counter::intersection_tests) << " tests; expected object 0 after 1 test");
+    CHECK(far);
+    CHECK(hit.object == 0);
+    CHECK(counter(Counter::intersection_tests) == 1);
+}

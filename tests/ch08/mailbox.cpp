@@ -1,0 +1,110 @@
+// EXERCISE 08.2: one object tested through its mailbox: tested once per ray, answered from the
+// mailbox after that, right as the query's range shrinks.
+#include "08_mailboxing/08_mailboxing.hpp"
+#include "tests/ch07/hand_grid.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::hand_grid;
+
+namespace {
+
+std::uint64_t tests() { return total_counts()[static_cast<size_t>(Counter::intersection_tests)]; }
+std::uint64_t answered() { return total_counts()[static_cast<size_t>(Counter::mailbox_hits)]; }
+
+Mailboxes fresh() { return Mailboxes{std::vector<Mailbox>(6), 0}; }
+
+struct Asked {
+    bool found;
+    ObjectHit hit;
+    std::uint64_t tests, answered;
+};
+
+Asked ask(Mailboxes& m, std::uint32_t signature, int k, Interval range)
+{
+    reset_counters();
+    ObjectHit hit;
+    const bool found = mailboxed_intersect(m, signature, objects(), k, ray, range, hit);
+    return {found, hit, tests(), answered()};
+}
+
+std::string show(const Asked& a)
+{
+    std::ostringstream s;
+    s << (a.found ? grader::show(a.hit) : std::string("no hit")) << " after " << a.tests << " intersection tests and "
+      << a.answered << " answers from the mailbox";
+    return s.str();
+}
+
+}  // namespace
+
+GRADED_TEST("mailboxed_intersect: the first time a ray meets an object it is tested and the answer is stored", "08.2", 3)
+{
+    Mailboxes m = fresh();
+    const Asked a = ask(m, 7, 2, all);
+    INFO("ray 7 meets sphere 2 (hit at t = 1.3) for the first time: " << show(a) << "; its mailbox now holds ray "
+         << m.box[2].ray << ", t = " << m.box[2].t << "; expected a hit after 1 test, the mailbox holding ray 7 and t = 1.3");
+    CHECK(a.found);
+    CHECK(a.hit.object == 2);
+    CHECK(a.tests == 1);
+    CHECK(a.answered == 0);
+    CHECK(m.box[2].ray == 7);
+    CHECK(m.box[2].t == a.hit.t);
+    const Asked miss = ask(m, 7, 3, {0.0f, 1.5f});
+    INFO("ray 7 meets the triangle (object 3, hit at t = 2) with t in (0, 1.5): " << show(miss) << "; its mailbox holds ray "
+         << m.box[3].ray << ", t = " << m.box[3].t << "; expected a miss after 1 test, stored as t = infinity");
+    CHECK(!miss.found);
+    CHECK(miss.tests == 1);
+    CHECK(m.box[3].ray == 7);
+    CHECK(std::isinf(m.box[3].t));
+}
+
+GRADED_TEST("mailboxed_intersect: the same ray meeting the object again is answered from the mailbox, untested", "08.2", 4)
+{
+    Mailboxes m = fresh();
+    const Asked first = ask(m, 7, 1, all);
+    const Asked again = ask(m, 7, 1, all);
+    INFO("ray 7 meets sphere 1 twice: first " << show(first) << ", then " << show(again)
+         << "; expected the same hit, the second time with no test and 1 answer from the mailbox");
+    CHECK(again.found);
+    CHECK(again.hit.object == 1);
+    CHECK(again.hit.t == first.hit.t);
+    CHECK(again.tests == 0);
+    CHECK(again.answered == 1);
+    // A triangle's answer keeps where on the triangle the ray hit.
+    const Asked tri = ask(m, 7, 4, all);
+    const Asked tri_again = ask(m, 7, 4, all);
+    INFO("the triangle, object 4, twice: " << show(tri) << " (beta " << tri.hit.beta << ", gamma " << tri.hit.gamma
+         << "), then " << show(tri_again) << " (beta " << tri_again.hit.beta << ", gamma " << tri_again.hit.gamma << ")");
+    CHECK(tri_again.tests == 0);
+    CHECK(tri_again.hit.beta == tri.hit.beta);
+    CHECK(tri_again.hit.gamma == tri.hit.gamma);
+    // A stored miss is a miss.
+    ask(m, 7, 0, {0.0f, 2.0f});
+    const Asked miss_again = ask(m, 7, 0, {0.0f, 1.8f});
+    INFO("sphere 0 (hit at t = 3.3) missed in (0, 2), asked again in (0, 1.8): " << show(miss_again));
+    CHECK(!miss_again.found);
+    CHECK(miss_again.tests == 0);
+}
+
+GRADED_TEST("mailboxed_intersect: a stored hit counts only inside the range asked now; another ray is tested again", "08.2", 4)
+{
+    Mailboxes m = fresh();
+    ask(m, 7, 0, all);  // sphere 0 hit at t = 3.3 in cell 0, beyond it: stored all the same
+    const Asked nearer = ask(m, 7, 0, {0.0f, 3.0f});
+    INFO("sphere 0's stored hit at t = 3.3, asked for t in (0, 3) (a nearer hit found meanwhile): " << show(nearer)
+         << "; expected a miss, from the mailbox");
+    CHECK(!nearer.found);
+    CHECK(nearer.tests == 0);
+    CHECK(nearer.answered == 1);
+    const Asked still = ask(m, 7, 0, {0.0f, 3.5f});
+    INFO("asked for t in (0, 3.5): " << show(still) << "; expected the stored hit");
+    CHECK(still.found);
+    CHECK(still.tests == 0);
+    const Asked other = ask(m, 8, 0, all);
+    INFO("ray 8 meets sphere 0: " << show(other) << "; expected a test (the mailbox holds ray 7's answer)");
+    CHECK(other.found);
+    CHECK(other.tests == 1);
+    CHECK(other.answered == 0);
+    CHECK(m.box[0].ray == 8);
+}
