@@ -73,26 +73,59 @@ GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature cou
     const LitScene scene = lit_scene(nff);
     const Objects objects = objects_of(scene, lit_tests);
     const MailboxGrid grid(objects, 8.0f);
-    // The first rays fill mailboxes with signatures 1, 2, ...; then the counter is moved to a few
-    // rays before its end, and the rays after the wrap get those small signatures again.
+    // Rays 0-199 get signatures 1-200 and leave their answers in the mailboxes. Then the counter is
+    // set to its last value, so rays 200-399 get 1-200 again, after the wrap: each is ray k - 200
+    // moved aside a little, so it meets the same sticks at other t, and an answer left by the old
+    // ray of its signature is wrong for it.
     Rng rng(4, 4);
+    std::vector<Ray> rays;
+    for (int k = 0; k < 200; ++k) {
+        const point3 o(4 * rng.next_float() - 2, 1.5f * rng.next_float(), 4 * rng.next_float() - 2);
+        rays.push_back({o, glm::normalize(vec3(2 * rng.next_float() - 1, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1))});
+    }
+    for (int k = 0; k < 200; ++k)
+        rays.push_back({rays[k].origin + 0.02f * glm::normalize(glm::cross(rays[k].dir, vec3(0, 1, 0))), rays[k].dir});
     int wrong = 0;
     std::string first;
     for (int k = 0; k < 400; ++k) {
         if (k == 200)
-            grid.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max() - 100;
-        const point3 o(4 * rng.next_float() - 2, 1.5f * rng.next_float(), 4 * rng.next_float() - 2);
-        const vec3 d = glm::normalize(vec3(2 * rng.next_float() - 1, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1));
+            grid.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max();
         ObjectHit want, got;
-        const bool w = brute_force().closest({o, d}, {0.0f, infinity}, objects, want);
-        const bool g = grid.closest({o, d}, {0.0f, infinity}, objects, got);
+        const bool w = brute_force().closest(rays[k], {0.0f, infinity}, objects, want);
+        const bool g = grid.closest(rays[k], {0.0f, infinity}, objects, got);
         if (w != g || (w && (want.object != got.object || want.t != got.t))) {
             if (wrong++ == 0)
                 first = "ray " + std::to_string(k) + ": brute force " + (w ? show(want) : "no hit") + ", the grid " +
                         (g ? show(got) : "no hit");
         }
     }
-    INFO("400 rays, the signature counter set to 2^32 - 101 after the first 200: " << wrong
-         << " answered differently from brute force; the first: " << first);
+    INFO("400 rays, the signature counter set to 2^32 - 1 after the first 200, so that rays 200-399 reuse "
+         "signatures 1-200: " << wrong << " answered differently from brute force; the first: " << first);
     CHECK(wrong == 0);
+
+    // One sphere: ray A (signature 1) passes it by, inside its cell; after the wrap ray B, signature
+    // 1 again, aims at its centre. A mailbox still holding A's miss under signature 1 loses B's hit.
+    const std::vector<Sphere> one = {{{0, 0, 0}, 0.5f}};
+    Objects sphere;
+    sphere.spheres = one.data();
+    sphere.sphere_count = 1;
+    const MailboxGrid single(sphere, 1.0f);
+    ObjectHit hit;
+    single.mailboxes().last_signature = 0;
+    const bool a = single.closest({{-5, 0.45f, 0.45f}, {1, 0, 0}}, {0.0f, infinity}, sphere, hit);
+    single.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max();
+    const bool b = single.closest({{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, hit);
+    INFO("ray A passes the sphere by (signature 1): " << (a ? "hit" : "no hit") << "; the counter wraps; ray B, "
+         "aimed at the sphere's centre with signature 1 again: " << (b ? show(hit) : "no hit")
+         << "; expected a hit at t = 4.5");
+    CHECK(!a);
+    CHECK(b);
+    // A counter that wraps on a set whose mailboxes are still empty: the signature must not be 0,
+    // which every empty mailbox holds.
+    const MailboxGrid fresh(sphere, 1.0f);
+    fresh.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max();
+    const bool c = fresh.closest({{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, hit);
+    INFO("a fresh grid whose counter wraps at its first ray, aimed at the sphere: " << (c ? show(hit) : "no hit")
+         << " (signature " << fresh.mailboxes().last_signature << "); expected a hit");
+    CHECK(c);
 }
