@@ -27,7 +27,7 @@ struct Options {
     std::string mailbox = "on";
     float lambda = ch07::default_lambda;
     bool sweep = false;
-    int repeat = 5;
+    int repeat = 9;
     std::string csv = "08_mailboxing.csv";
 };
 
@@ -116,9 +116,8 @@ struct Run {
     std::vector<ObjectHit> answers;
 };
 
-// Every ray of the set through `accel`, on this thread: one counted pass that keeps the answers,
-// then `repeat` timed passes.
-Run run(const Accelerator& accel, const RaySet& set, const Objects& objects, int repeat)
+// Every ray of the set through `accel`, on this thread, once: the answers and what they cost.
+Run count_pass(const Accelerator& accel, const RaySet& set, const Objects& objects)
 {
     Run r;
     reset_counters();
@@ -133,20 +132,36 @@ Run run(const Accelerator& accel, const RaySet& set, const Objects& objects, int
     const Counts counts = total_counts();
     r.tests = counted(counts, Counter::intersection_tests);
     r.saved = counted(counts, Counter::mailbox_hits);
-    std::vector<double> times;
-    for (int rep = 0; rep < repeat; ++rep) {
-        const Timer timer;
-        for (size_t k = 0; k < set.rays.size(); ++k) {
-            ObjectHit h;
-            if (set.any_hit)
-                accel.any(set.rays[k], set.ranges[k], objects);
-            else
-                accel.closest(set.rays[k], set.ranges[k], objects, h);
-        }
-        times.push_back(1e3 * timer.seconds());
-    }
-    r.ms = median(times);
     return r;
+}
+
+double timed_pass(const Accelerator& accel, const RaySet& set, const Objects& objects)
+{
+    const Timer timer;
+    for (size_t k = 0; k < set.rays.size(); ++k) {
+        ObjectHit h;
+        if (set.any_hit)
+            accel.any(set.rays[k], set.ranges[k], objects);
+        else
+            accel.closest(set.rays[k], set.ranges[k], objects, h);
+    }
+    return 1e3 * timer.seconds();
+}
+
+// The two structures on the same rays: a counted pass each, then `repeat` timed passes of each,
+// interleaved (a, b, a, b, ...) so that the machine's changing load falls on both alike.
+std::pair<Run, Run> compare(const Accelerator& a, const Accelerator& b, const RaySet& set, const Objects& objects,
+                            int repeat)
+{
+    std::pair<Run, Run> runs{count_pass(a, set, objects), count_pass(b, set, objects)};
+    std::vector<double> ta, tb;
+    for (int rep = 0; rep < repeat; ++rep) {
+        ta.push_back(timed_pass(a, set, objects));
+        tb.push_back(timed_pass(b, set, objects));
+    }
+    runs.first.ms = median(ta);
+    runs.second.ms = median(tb);
+    return runs;
 }
 
 bool same_answers(const Run& a, const Run& b)
@@ -164,16 +179,16 @@ void sweep(const Options& o, const CommandLine& cli)
     RenderSettings settings = render_settings(o.common);
     settings.show_progress = false;
     if (!cli.given("--width"))
-        settings.width = 160;
+        settings.width = 320;
     if (!cli.given("--height"))
-        settings.height = 90;
+        settings.height = 180;
     std::cerr << "measuring what the mailboxes save, by density and ray kind, on three scenes...\n";
     std::ofstream csv(o.csv);
     csv << "scene,objects,lambda,references_per_object,kind,count,tests_per_ray_grid,tests_per_ray_mailboxes,"
            "tests_saved_percent,ms_grid,ms_mailboxes,time_saved_percent\n";
     std::cout << "\nthe grid with and without mailboxes, the same rays (" << settings.width << "x" << settings.height
               << " primary rays, their shadow feelers and mirror rays), 1 thread, medians of " << o.repeat
-              << " runs; answers identical\n\n"
+              << " interleaved runs; answers identical\n\n"
               << "| scene | lambda | refs/object | rays | count | tests/ray | with mailboxes | tests saved | ms | ms with "
                  "mailboxes | time saved |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     const std::vector<NffScene> scenes = {ch08::figure_scene(),
@@ -191,8 +206,7 @@ void sweep(const Options& o, const CommandLine& cli)
             const MailboxGrid mailboxed(objects, lambda);
             const double refs = static_cast<double>(grid.stats().references) / objects.size();
             for (const RaySet& set : sets) {
-                const Run a = run(grid, set, objects, o.repeat);
-                const Run b = run(mailboxed, set, objects, o.repeat);
+                const auto [a, b] = compare(grid, mailboxed, set, objects, o.repeat);
                 if (!same_answers(a, b))
                     throw std::runtime_error("the grid with mailboxes answered differently on " + nff.name + ": a bug of the kit");
                 const double n = static_cast<double>(std::max<size_t>(1, set.rays.size()));
