@@ -33,6 +33,8 @@ enum class Counter {
     // --stats lines.
     cells_visited,
     mailbox_hits,  // object tests answered from a mailbox (chapter 08), not counted as tests
+    table_lookups,          // hash-table lookups of the hashed grid (chapter 09)
+    table_lookups_skipped,  // cells whose occupancy bit was off: no lookup (chapter 09)
     count_  // the number of counters, not a counter
 };
 

@@ -15,7 +15,7 @@
 
 namespace rt {
 
-cell3 grid_resolution(const Bounds& box, int objects, float lambda)
+cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_axis)
 {
     // EXERCISE 07.1: the cube-root rule.
     // 1. No objects, or an empty box: 1 x 1 x 1.
@@ -24,7 +24,7 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda)
     // 3. Cells of side s with V / s^dims = lambda N: s = (V / (lambda N))^(1 / dims).
     // 4. An axis with extent <= s is thinner than a cell: drop it from the dims (it gets 1 cell)
     //    and go back to 3 with the others. When none is dropped, n_i = round(extent_i / s),
-    //    clamped to 1 .. max_cells_per_axis.
+    //    clamped to 1 .. max_per_axis.
     // Hint: std::pow(x, 1.0f / dims); compute in float, the box is float; clamp a float before
     // converting it to int.
     return {1, 1, 1};

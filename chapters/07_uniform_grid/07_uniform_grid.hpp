@@ -51,11 +51,12 @@ inline GridShape grid_shape(const Bounds& box, const cell3& n)
 // EXERCISE 07.1: the grid's resolution, by the cube-root rule (Cleary and Wyvill 1988; pbrt's
 // grid): choose cells of one size s on every axis so that the box holds about lambda * N cells,
 // lambda cells per object: s = cbrt(V / (lambda N)) for the box's volume V, and n_i = extent_i / s,
-// rounded, at least 1 and at most max_cells_per_axis. An axis thinner than one cell (extent_i <= s:
-// a scene that is one floor has 0) gets 1 cell and is left out, and s is computed again over the
-// others, from their area (or length) instead of the volume: the lambda N cells are spread where
-// the scene has room. No objects (N = 0), or no extent at all: 1 x 1 x 1.
-cell3 grid_resolution(const Bounds& box, int objects, float lambda);
+// rounded, at least 1 and at most max_per_axis (the dense grid's max_cells_per_axis by default;
+// chapter 09's hashed grid, which stores only the cells that hold something, allows more). An axis
+// thinner than one cell (extent_i <= s: a scene that is one floor has 0) gets 1 cell and is left
+// out, and s is computed again over the others, from their area (or length) instead of the
+// volume: the lambda N cells are spread where the scene has room. No objects (N = 0), or no extent at all: 1 x 1 x 1.
+cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_axis = max_cells_per_axis);
 
 // EXERCISE 07.2: the cell holding point p: i = floor((p_x - min_x) / s_x) on each axis, clamped
 // to 0 .. n_x - 1, so a point on the box's far face, or a hair outside from rounding, is in the

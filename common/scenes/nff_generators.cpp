@@ -1,5 +1,6 @@
 #include "common/scenes/nff_generators.hpp"
 
+#include "02_spheres_triangles/mesh.hpp"
 #include "common/random.hpp"
 #include "common/vec.hpp"
 
@@ -350,6 +351,40 @@ void write_sticks(std::ostream& out, int depth)
     }
 }
 
+void write_stadium(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("teapot in a stadium, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    // The view: close to the small dense mesh, the stadium's stands behind it.
+    w.view(dvec3(0.0, 2.3, 4.6), dvec3(0.0, 1.0, 0.0), 50.0, 512);
+    w.background(dvec3(0.078, 0.361, 0.753));
+    w.light(dvec3(12.0, 30.0, 20.0));
+    w.light(dvec3(-25.0, 18.0, 10.0));
+    // The stadium: a field 130 across, and stands rising from radius 40 to 60, 64 segments round
+    // and 6 tiers up: big triangles, few of them.
+    w.material(dvec3(0.3, 0.55, 0.25), 0.9, 0.0, 0.0);
+    w.floor(0.0, 65.0);
+    w.material(dvec3(0.6, 0.6, 0.65), 0.9, 0.05, 5.0);
+    constexpr int segments = 64, tiers = 6;
+    const auto stand = [&](int s, int t) {
+        const double a = 2.0 * pi * s / segments, radius = 40.0 + 20.0 * t / tiers;
+        return dvec3(radius * std::cos(a), 15.0 * t / tiers, radius * std::sin(a));
+    };
+    for (int s = 0; s < segments; ++s)
+        for (int t = 0; t < tiers; ++t) {
+            // Facing the field (inward and up): counterclockwise seen from the centre.
+            w.polygon({stand(s, t), stand(s + 1, t + 1), stand(s + 1, t)});
+            w.polygon({stand(s, t), stand(s, t + 1), stand(s + 1, t + 1)});
+        }
+    // The "teapot": a small dense mesh at the field's centre, 20 x 4^depth triangles.
+    w.material(dvec3(0.9, 0.85, 0.8), 0.7, 0.3, 50.0);
+    const IndexedMesh pot = icosphere(point3(0.0f, 1.0f, 0.0f), 1.0f, depth);
+    for (int f = 0; f < static_cast<int>(pot.faces.size()); ++f) {
+        const Triangle t = pot.triangle(f);
+        w.polygon({dvec3(t.a), dvec3(t.b), dvec3(t.c)});
+    }
+}
+
 const std::vector<NffGenerator>& nff_generators()
 {
     // Depth limits: 597871 spheres, 262144 triangles, 88573 cones, 524288 triangles; each file tens of
@@ -360,6 +395,7 @@ const std::vector<NffGenerator>& nff_generators()
         {"tree", "a trunk branching into three, recursively: cones, joints and leaves", 5, 10, write_tree},
         {"mountain", "a fractal terrain of 2 x 4^depth triangles with four balls (SPD's mount)", 6, 9, write_mountain},
         {"sticks", "250 x 2^depth long thin triangles in a pile, each across many grid cells", 4, 12, write_sticks},
+        {"stadium", "a small dense mesh (20 x 4^depth triangles) in a huge sparse stadium: the teapot in a stadium", 5, 8, write_stadium},
     };
     return generators;
 }

@@ -42,6 +42,12 @@ void write_mountain(std::ostream& out, int depth);
 // the case mailboxing (chapter 08) is for.
 void write_sticks(std::ostream& out, int depth);
 
+// The teapot in a stadium (Haines' name for the case): a small dense mesh, a sphere of
+// 20 x 4^depth triangles 2 across, at the centre of a stadium 130 across whose field and stands
+// are a few big triangles. No one uniform grid serves both: cells fine enough for the small mesh
+// are far too many for the stadium, cells sized for the stadium put the whole mesh in one.
+void write_stadium(std::ostream& out, int depth);
+
 // The generators above, for the program and the tests.
 const std::vector<NffGenerator>& nff_generators();
 

@@ -10,6 +10,7 @@
 #include "tests/ch06/picture.hpp"
 #include "tests/ch07/picture.hpp"
 #include "tests/ch08/picture.hpp"
+#include "tests/ch09/picture.hpp"
 #include "tests/scenes/scene_pictures.hpp"
 
 #include <functional>
@@ -29,6 +30,7 @@ int main()
         {"06_depth_of_field", rt::pictures::ch06},
         {"07_uniform_grid", rt::pictures::ch07},
         {"08_mailboxing", rt::pictures::ch08},
+        {"09_hashed_voxels", rt::pictures::ch09},
     };
     for (const rt::pictures::ScenePicture& scene : rt::pictures::scene_pictures())
         pictures.emplace_back(scene.name, scene.render);

@@ -1,0 +1,222 @@
+// The hashed grid (given): chapter 07's grid shape and walk at a resolution no dense array could
+// hold, only its occupied cells stored, in a hash table of M buckets (cell p in bucket p mod M),
+// and one bit per cell saying whether to look there at all.
+//
+// The build sorts every (cell, object) reference by cell, makes one HashedCell per occupied cell,
+// and files the cells by bucket with a counting sort: three flat arrays and the bit array.
+#pragma once
+
+#include "02_spheres_triangles/scene_query.hpp"
+#include "07_uniform_grid/grid.hpp"
+#include "09_hashed_voxels/09_hashed_voxels.hpp"
+#include "common/error.hpp"
+#include "common/stats.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+// Why 2^27 references (1 GB of sort keys at most): a fine grid lists a large object in every cell
+// its box reaches, and a resolution too fine for a scene's big objects would take the build past
+// the machine's memory; such a build is refused, naming the count.
+constexpr long long max_hashed_references = 1LL << 27;
+
+struct HashedGridStats {
+    cell3 resolution{1};
+    long long cells = 0;       // of the whole grid, empty or not
+    long long occupied = 0;    // cells that hold an object: the table's entries
+    long long references = 0;  // (cell, object) pairs
+    std::uint32_t M = 1;
+    long long collisions = 0;  // cells filed in a bucket that already held one
+    std::size_t table_bytes = 0, bits_bytes = 0, bytes = 0;
+    double build_seconds = 0.0;
+};
+
+// The least prime at least n: a table size with no factor in common with the walk's strides, so
+// that cells a stride apart do not pile into a few buckets (the lesson measures a power of two).
+inline std::uint32_t prime_at_least(std::uint64_t n)
+{
+    if (n <= 2)
+        return 2;
+    for (std::uint64_t m = n | 1u;; m += 2) {
+        bool prime = true;
+        for (std::uint64_t d = 3; d * d <= m && prime; d += 2)
+            prime = m % d != 0;
+        if (prime)
+            return static_cast<std::uint32_t>(m);
+    }
+}
+
+class HashedGrid final : public Accelerator {
+public:
+    // lambda cells per object, up to max_hashed_cells_per_axis; table_size 0 takes the least
+    // prime at least twice the occupied cells. Throws InputError past the limits.
+    HashedGrid(const Objects& objects, float lambda, std::uint32_t table_size = 0) { build(objects, lambda, table_size); }
+
+    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        GridWalk walk = start_walk(shape_, ray, range);
+        if (walk.missed)
+            return false;
+        Residue r = residue_of(walk);
+        ObjectHit best;
+        do {
+            count(Counter::cells_visited);
+            if (closest_in_hashed_cell(table_, bits_, walk, r.r, ray, range, objects, best)) {
+                hit = best;
+                return true;
+            }
+        } while (step(walk, r));
+        return false;
+    }
+
+    bool any(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        GridWalk walk = start_walk(shape_, ray, range);
+        if (walk.missed)
+            return false;
+        Residue r = residue_of(walk);
+        ObjectHit hit;
+        do {
+            count(Counter::cells_visited);
+            if (!occupied(bits_, walk.p)) {
+                count(Counter::table_lookups_skipped);
+                continue;
+            }
+            count(Counter::table_lookups);
+            if (const HashedCell* cell = find_cell(table_, walk.p, r.r))
+                for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
+                    if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
+                        return true;
+        } while (step(walk, r));
+        return false;
+    }
+
+    std::size_t bytes() const override { return stats_.bytes; }
+    const HashedGridStats& stats() const { return stats_; }
+    const HashTable& table() const { return table_; }
+    const GridShape& shape() const { return shape_; }
+
+private:
+    // The walk's residue r = p mod M, and what a step along each axis adds to it (09.1).
+    struct Residue {
+        std::uint32_t r;
+        std::int32_t step[3];
+    };
+
+    Residue residue_of(const GridWalk& walk) const
+    {
+        // One division per ray, when the walk starts; none in the loop.
+        Residue res{static_cast<std::uint32_t>(static_cast<std::uint32_t>(walk.p) % table_.M), {0, 0, 0}};
+        for (int a = 0; a < 3; ++a)
+            res.step[a] = residue_step(walk.step_p[a], table_.M);
+        return res;
+    }
+
+    // The next cell (07.5) and its residue (09.2): the axis stepped is the one whose step_p p moved by.
+    bool step(GridWalk& walk, Residue& res) const
+    {
+        const int before = walk.p;
+        if (!next_cell(walk))
+            return false;
+        const int moved = walk.p - before;
+        const int a = moved == walk.step_p[0] ? 0 : moved == walk.step_p[1] ? 1 : 2;
+        res.r = advance_residue(res.r, res.step[a], table_.M);
+        return true;
+    }
+
+    void build(const Objects& objects, float lambda, std::uint32_t table_size)
+    {
+        const Timer timer;
+        const int count = objects.size();
+        Bounds scene;
+        for (int k = 0; k < count; ++k)
+            scene.grow(objects.bounds(k));
+        const cell3 n = grid_resolution(scene, count, lambda, max_hashed_cells_per_axis);
+        const long long cells = static_cast<long long>(n.x) * n.y * n.z;
+        if (cells >= (1LL << 31))
+            throw InputError("a hashed grid of " + std::to_string(n.x) + " x " + std::to_string(n.y) + " x " +
+                             std::to_string(n.z) + " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
+        const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
+        shape_ = grid_shape(count > 0 ? grown(scene, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
+
+        // Every (cell, object) reference as one 64-bit key, cell above object, sorted.
+        std::vector<CellRange> ranges(static_cast<std::size_t>(count));
+        long long references = 0;
+        for (int k = 0; k < count; ++k) {
+            ranges[k] = cells_overlapping(shape_, grown(objects.bounds(k), margin));
+            const cell3 span = ranges[k].last - ranges[k].first + cell3(1);
+            references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
+        }
+        if (references > max_hashed_references)
+            throw InputError("a hashed grid of " + std::to_string(n.x) + " x " + std::to_string(n.y) + " x " +
+                             std::to_string(n.z) + " cells would list " + std::to_string(references) +
+                             " (cell, object) references, past the limit of " + std::to_string(max_hashed_references) +
+                             ": choose a smaller lambda");
+        std::vector<std::uint64_t> keys;
+        keys.reserve(static_cast<std::size_t>(references));
+        for (int k = 0; k < count; ++k)
+            for (int i = ranges[k].first.x; i <= ranges[k].last.x; ++i)
+                for (int j = ranges[k].first.y; j <= ranges[k].last.y; ++j)
+                    for (int l = ranges[k].first.z; l <= ranges[k].last.z; ++l) {
+                        const int p = shape_.address({i, j, l});
+                        if (p >= 0 && p < cells)  // a student's 07.3 may step outside the grid
+                            keys.push_back((static_cast<std::uint64_t>(p) << 32) | static_cast<std::uint32_t>(k));
+                    }
+        std::sort(keys.begin(), keys.end());
+
+        // One HashedCell per occupied cell, its objects in increasing number.
+        std::vector<HashedCell> by_address;
+        table_.object_index.resize(keys.size());
+        for (std::size_t i = 0; i < keys.size(); ++i) {
+            const auto p = static_cast<std::int32_t>(keys[i] >> 32);
+            table_.object_index[i] = static_cast<std::uint32_t>(keys[i] & 0xffffffffu);
+            if (by_address.empty() || by_address.back().p != p)
+                by_address.push_back({p, static_cast<std::uint32_t>(i), 0});
+            ++by_address.back().count;
+        }
+        keys = {};
+
+        // Filed by bucket (a counting sort, stable: by increasing address within a bucket).
+        table_.M = table_size > 0 ? table_size : prime_at_least(2 * std::max<std::uint64_t>(1, by_address.size()));
+        table_.bucket_start.assign(static_cast<std::size_t>(table_.M) + 1, 0);
+        for (const HashedCell& c : by_address)
+            ++table_.bucket_start[static_cast<std::uint32_t>(c.p) % table_.M + 1];
+        long long collisions = 0;
+        for (std::uint32_t b = 0; b < table_.M; ++b) {
+            collisions += std::max<long long>(0, static_cast<long long>(table_.bucket_start[b + 1]) - 1);
+            table_.bucket_start[b + 1] += table_.bucket_start[b];
+        }
+        table_.cells.resize(by_address.size());
+        std::vector<std::uint32_t> fill(table_.bucket_start.begin(), table_.bucket_start.end() - 1);
+        for (const HashedCell& c : by_address)
+            table_.cells[fill[static_cast<std::uint32_t>(c.p) % table_.M]++] = c;
+
+        bits_.words.assign(static_cast<std::size_t>((cells + 63) / 64), 0);
+        for (const HashedCell& c : by_address)
+            bits_.words[static_cast<std::uint32_t>(c.p) >> 6] |= std::uint64_t{1} << (static_cast<std::uint32_t>(c.p) & 63u);
+
+        stats_.resolution = n;
+        stats_.cells = cells;
+        stats_.occupied = static_cast<long long>(by_address.size());
+        stats_.references = static_cast<long long>(table_.object_index.size());
+        stats_.M = table_.M;
+        stats_.collisions = collisions;
+        stats_.table_bytes = table_.bucket_start.size() * sizeof(std::uint32_t) + table_.cells.size() * sizeof(HashedCell) +
+                             table_.object_index.size() * sizeof(std::uint32_t);
+        stats_.bits_bytes = bits_.words.size() * sizeof(std::uint64_t);
+        stats_.bytes = stats_.table_bytes + stats_.bits_bytes;
+        stats_.build_seconds = timer.seconds();
+    }
+
+    GridShape shape_;
+    HashTable table_;
+    OccupancyBits bits_;
+    HashedGridStats stats_;
+};
+
+}  // namespace rt

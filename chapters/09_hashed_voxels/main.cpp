@@ -1,0 +1,251 @@
+// Chapter 09's program: renders the figure (the teapot in a stadium through the hashed grid,
+// beside its heat map) or any NFF scene (--scene, --classic) through brute force, the dense grid
+// or the hashed one (--accel). --sweep measures the trade: the table size M against collisions,
+// bytes and time; the hashed grid against the dense one at equal resolution and past the dense
+// grid's limit.
+#include "09_hashed_voxels/figure.hpp"
+#include "common/cli.hpp"
+#include "common/output.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    SceneOptions scene;
+    std::string accel = "hashed";
+    float lambda = ch09::default_hashed_lambda;
+    int table_size = 0;
+    bool sweep = false;
+    int repeat = 5;
+    std::string csv = "09_hashed_voxels.csv";
+};
+
+void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
+                           const Counts& counts)
+{
+    out << "accel=" << o.accel << '\n'
+        << "objects=" << objects << '\n'
+        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n'
+        << "table_lookups=" << counted(counts, Counter::table_lookups) << '\n'
+        << "table_lookups_skipped=" << counted(counts, Counter::table_lookups_skipped) << '\n';
+    if (const auto* h = dynamic_cast<const HashedGrid*>(accel)) {
+        const HashedGridStats& s = h->stats();
+        out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+            << "grid_cells=" << s.cells << '\n'
+            << "occupied_cells=" << s.occupied << '\n'
+            << "table_size=" << s.M << '\n'
+            << "table_load=" << static_cast<double>(s.occupied) / s.M << '\n'
+            << "table_collisions=" << s.collisions << '\n'
+            << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
+            << "table_bytes=" << s.table_bytes << '\n'
+            << "bits_bytes=" << s.bits_bytes << '\n'
+            << "bytes=" << s.bytes << '\n'
+            << "build_seconds=" << s.build_seconds << '\n';
+    } else if (const auto* g = dynamic_cast<const UniformGrid*>(accel)) {
+        const GridStats& s = g->stats();
+        out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+            << "grid_cells=" << s.cells << '\n'
+            << "bytes=" << s.bytes << '\n'
+            << "build_seconds=" << s.build_seconds << '\n';
+    }
+}
+
+SceneProgram scene_program(const Options& o)
+{
+    return {"09_hashed_voxels",
+            ch09::figure_scene,
+            {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
+             {"cells", Counter::cells_visited, "cells visited per pixel"},
+             {"lookups", Counter::table_lookups, "table lookups per pixel"}},
+            [&o](const Objects& objects) {
+                return ch09::make_accelerator(o.accel, objects, o.lambda, static_cast<std::uint32_t>(o.table_size));
+            },
+            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
+                print_structure_stats(out, o, objects, accel, counts);
+            }};
+}
+
+// --- The trade ---
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Measured {
+    std::string structure;
+    double build_ms = 0.0, render_ms = 0.0;
+    std::size_t bytes = 0;
+    cell3 resolution{1};
+    long long occupied = 0, references = 0, collisions = 0;
+    std::uint32_t M = 0;
+    double tests_per_ray = 0.0, cells_per_ray = 0.0, lookups_per_ray = 0.0, skipped_per_ray = 0.0;
+    std::vector<std::uint8_t> pixels;
+};
+
+Measured measure(const NffScene& nff, const std::string& accel, float lambda, std::uint32_t table_size,
+                 const RenderSettings& settings, int repeat)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    const Objects objects = objects_of(scene, lit_tests);
+    Measured m;
+    m.structure = accel;
+    std::unique_ptr<Accelerator> structure;
+    std::vector<double> builds;
+    for (int r = 0; r < (accel == "brute" ? 1 : repeat); ++r) {
+        const Timer timer;
+        structure = ch09::make_accelerator(accel, objects, lambda, table_size);
+        builds.push_back(1e3 * timer.seconds());
+    }
+    m.build_ms = accel == "brute" ? 0.0 : median(builds);
+    if (const auto* h = dynamic_cast<const HashedGrid*>(structure.get())) {
+        m.resolution = h->stats().resolution;
+        m.occupied = h->stats().occupied;
+        m.references = h->stats().references;
+        m.collisions = h->stats().collisions;
+        m.M = h->stats().M;
+    } else if (const auto* g = dynamic_cast<const UniformGrid*>(structure.get())) {
+        m.resolution = g->stats().resolution;
+        m.references = g->stats().references;
+    }
+    m.bytes = structure ? structure->bytes() : 0;
+    scene.accelerator = structure.get();
+    reset_counters();
+    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
+    const Counts counts = total_counts();
+    const double rays = static_cast<double>(total_rays(counts));
+    m.tests_per_ray = counted(counts, Counter::intersection_tests) / rays;
+    m.cells_per_ray = counted(counts, Counter::cells_visited) / rays;
+    m.lookups_per_ray = counted(counts, Counter::table_lookups) / rays;
+    m.skipped_per_ray = counted(counts, Counter::table_lookups_skipped) / rays;
+    std::vector<double> times;
+    for (int r = 0; r < repeat; ++r) {
+        const Timer timer;
+        render_lit(file, scene, FeelerSettings{});
+        times.push_back(1e3 * timer.seconds());
+    }
+    m.render_ms = median(times);
+    return m;
+}
+
+std::string resolution(const cell3& n)
+{
+    std::ostringstream s;
+    s << n.x << 'x' << n.y << 'x' << n.z;
+    return s.str();
+}
+
+void sweep(const Options& o, const CommandLine& cli)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.show_progress = false;
+    if (!cli.given("--threads"))
+        settings.threads = 1;
+    if (!cli.given("--width"))
+        settings.width = 160;
+    if (!cli.given("--height"))
+        settings.height = 90;
+    std::cerr << "measuring the hashed grid against the dense one, then the table size (a few minutes)...\n";
+    const NffScene stadium = ch09::figure_scene();
+    const Measured brute = measure(stadium, "brute", 1.0f, 0, settings, 1);
+    std::ofstream csv(o.csv);
+    csv << "scene,structure,lambda,resolution,occupied_cells,references,table_size,collisions,bytes,build_ms,"
+           "tests_per_ray,cells_per_ray,lookups_per_ray,skipped_per_ray,render_ms\n";
+    std::cout << "\nthe teapot in a stadium (" << brute.tests_per_ray << " tests per ray by brute force, "
+              << std::fixed << std::setprecision(0) << brute.render_ms << " ms), " << settings.width << "x"
+              << settings.height << ", 1 thread, medians of " << o.repeat << " runs; every image identical to brute "
+                 "force's\n\n| structure | lambda | resolution | cells | occupied | MB | bytes/reference | build ms | "
+                 "tests/ray | cells/ray | lookups/ray | skipped by bits/ray | render ms |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const auto row = [&](const Measured& m, float lambda) {
+        if (m.pixels != brute.pixels)
+            throw std::runtime_error("the " + m.structure + "'s image differs from brute force's: a bug of the kit");
+        const double cells = static_cast<double>(m.resolution.x) * m.resolution.y * m.resolution.z;
+        std::cout << std::fixed << "| " << m.structure << " | " << std::setprecision(0) << lambda << " | "
+                  << resolution(m.resolution) << " | " << std::setprecision(1) << cells / 1e6 << " M | "
+                  << (m.occupied ? std::to_string(m.occupied) : std::string("-")) << " | " << std::setprecision(1)
+                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
+                  << (m.references ? static_cast<double>(m.bytes) / m.references : 0.0) << " | " << m.build_ms << " | "
+                  << m.tests_per_ray << " | " << m.cells_per_ray << " | " << m.lookups_per_ray << " | "
+                  << m.skipped_per_ray << " | " << m.render_ms << " |\n";
+        csv << "\"" << stadium.name << "\"," << m.structure << ',' << lambda << ',' << resolution(m.resolution) << ','
+            << m.occupied << ',' << m.references << ',' << m.M << ',' << m.collisions << ',' << m.bytes << ','
+            << m.build_ms << ',' << m.tests_per_ray << ',' << m.cells_per_ray << ',' << m.lookups_per_ray << ','
+            << m.skipped_per_ray << ',' << m.render_ms << '\n';
+    };
+    for (const float lambda : {4.0f, 16.0f, 64.0f, 256.0f, 1024.0f, 4096.0f}) {
+        try {
+            row(measure(stadium, "grid", lambda, 0, settings, o.repeat), lambda);
+        } catch (const InputError&) {
+            std::cout << "| grid | " << lambda << " | the dense grid cannot hold it (over 2^25 cells) | | | | | | | | | | |\n";
+        }
+        row(measure(stadium, "hashed", lambda, 0, settings, o.repeat), lambda);
+    }
+
+    std::cout << "\nthe table size M at lambda " << ch09::default_hashed_lambda
+              << " (the default M: the least prime at least twice the occupied cells)\n\n"
+                 "| M | load | collisions | MB | render ms |\n|---|---|---|---|---|\n";
+    const Measured base = measure(stadium, "hashed", ch09::default_hashed_lambda, 0, settings, 1);
+    const std::uint64_t occupied = static_cast<std::uint64_t>(base.occupied);
+    for (const std::uint64_t size : {occupied / 8, occupied / 2, occupied, std::uint64_t{1} << 20, 2 * occupied, 8 * occupied}) {
+        const auto M = static_cast<std::uint32_t>(std::max<std::uint64_t>(1, size));
+        const Measured m = measure(stadium, "hashed", ch09::default_hashed_lambda, M, settings, o.repeat);
+        if (m.pixels != brute.pixels)
+            throw std::runtime_error("the hashed grid's image differs from brute force's: a bug of the kit");
+        std::cout << std::fixed << "| " << M << (M == (1u << 20) ? " (2^20)" : "") << " | " << std::setprecision(2)
+                  << static_cast<double>(m.occupied) / M << " | " << m.collisions << " | " << std::setprecision(1)
+                  << static_cast<double>(m.bytes) / 1e6 << " | " << m.render_ms << " |\n";
+    }
+    std::cout << "\nwrote " << o.csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("09_hashed_voxels", [&] {
+        Options o;
+        o.common.out = "09_hashed_voxels.png";
+        CommandLine cli("09_hashed_voxels", "Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.");
+        add_common_options(cli, o.common);
+        const SceneProgram program = scene_program(o);
+        add_scene_program_options(cli, o.scene, program);
+        cli.option("--accel", o.accel, "what answers the queries: hashed, grid (dense, chapter 07) or brute");
+        cli.option("--lambda", o.lambda, "cells per object (256 for the hashed grid, 4 for the dense one by default)",
+                   0.0f, 1e6f);
+        cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
+                   "occupied cells)", 0, 1 << 30);
+        cli.flag("--sweep", o.sweep, "measure the hashed grid against the dense one, and the table size");
+        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        if (o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes hashed, grid or brute, got '" + o.accel + "'");
+        if (o.accel == "grid" && !cli.given("--lambda"))
+            o.lambda = ch07::default_lambda;
+        if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--table-size")))
+            throw InputError("--lambda and --table-size set up a grid; they do not apply to --accel brute");
+        if (o.accel != "hashed" && cli.given("--table-size"))
+            throw InputError("--table-size sizes the hashed grid's table; it applies to --accel hashed only");
+        check_scene_without_sweep(o.scene.scene, o.sweep);
+        check_scene_program_options(program, o.scene, o.common);
+        if (o.sweep) {
+            check_writable(o.csv, "CSV");
+            sweep(o, cli);
+            return 0;
+        }
+        return render_scene_program(program, o.common, o.scene, cli);
+    });
+}

@@ -1,0 +1,31 @@
+// The hashed grid as a whole (EXERCISES 09.1-09.5 with chapter 07's walk and the given build):
+// brute force's answers on every ray, at resolutions far beyond the dense grid's.
+#include "09_hashed_voxels/figure.hpp"
+#include "tests/ch07/agreement.hpp"
+
+#include <filesystem>
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::agreement;
+
+namespace {
+
+// The agreement tests' densities times 100: 30 to 900 cells per object.
+const Build hashed = [](const Objects& objects, float lambda) { return std::make_unique<HashedGrid>(objects, 100.0f * lambda); };
+
+}  // namespace
+
+GRADED_TEST("the hashed grid answers every ray as brute force does, on the kit's scenes and generated ones", "09.A", 4)
+{
+    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
+        if (entry.path().extension() == ".nff")
+            check_scene(hashed, read_nff(entry.path().string()), 600);
+    check_scene(hashed, ch07::generated_scene(write_stadium, 2, "stadium 2"), 600);
+    check_scene(hashed, ch07::generated_scene(write_mountain, 4, "mountain 4"), 400);
+}
+
+STABILITY_TEST("the hashed grid answers as brute force does on ties, a huge floor and far from the origin", "09.A", 3)
+{
+    check_hard_cases(hashed);
+}

@@ -1,0 +1,85 @@
+// EXERCISES 09.3 and 09.4: the occupancy bits, and finding a cell in its bucket among the others
+// that share its residue.
+#include "09_hashed_voxels/hashed_grid.hpp"
+#include "tests/ch07/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+GRADED_TEST("occupied: bit p of the array, word p / 64, bit p % 64", "09.3", 3)
+{
+    OccupancyBits bits;
+    bits.words.assign(4, 0);
+    for (const int p : {0, 63, 64, 130, 255})
+        bits.words[static_cast<size_t>(p) / 64] |= std::uint64_t{1} << (p % 64);
+    for (int p = 0; p < 256; ++p) {
+        const bool expected = p == 0 || p == 63 || p == 64 || p == 130 || p == 255;
+        INFO("occupied(bits with cells 0, 63, 64, 130 and 255 set, " << p << "): got " << std::boolalpha
+             << occupied(bits, p) << ", expected " << expected);
+        CHECK(occupied(bits, p) == expected);
+    }
+}
+
+namespace {
+
+// A table of M = 5 buckets holding cells 3, 8 and 13 (all in bucket 3) and 7 (bucket 2).
+HashTable colliding()
+{
+    HashTable t;
+    t.M = 5;
+    t.bucket_start = {0, 0, 0, 1, 4, 4};
+    t.cells = {{7, 0, 1}, {3, 1, 1}, {8, 2, 2}, {13, 4, 1}};
+    t.object_index = {10, 11, 12, 13, 14};
+    return t;
+}
+
+}  // namespace
+
+GRADED_TEST("find_cell: the cell whose key matches, among the cells that share its bucket", "09.4", 4)
+{
+    const HashTable t = colliding();
+    for (const std::int32_t p : {3, 8, 13, 7}) {
+        const HashedCell* c = find_cell(t, p, static_cast<std::uint32_t>(p) % t.M);
+        INFO("find_cell(cells 3, 8, 13 in bucket 3 of M = 5, cell 7 in bucket 2; p = " << p << "): got "
+             << (c ? "the cell with key " + std::to_string(c->p) : std::string("nothing")) << ", expected the cell " << p);
+        REQUIRE(c);
+        CHECK(c->p == p);
+    }
+    for (const std::int32_t p : {18, 2, 0}) {
+        const HashedCell* c = find_cell(t, p, static_cast<std::uint32_t>(p) % t.M);
+        INFO("find_cell(p = " << p << ", which the table does not hold; bucket " << p % 5 << "): got "
+             << (c ? "the cell with key " + std::to_string(c->p) : std::string("nothing")) << ", expected nothing: "
+             << (p == 18 ? "cell 18 shares bucket 3 with 3, 8 and 13, but is none of them" : "an empty bucket"));
+        CHECK(c == nullptr);
+    }
+}
+
+GRADED_TEST("the hashed grid's table keeps colliding cells apart: a table of 1 to 7 buckets answers as 2^20 do", "09.4", 4)
+{
+    const std::vector<Sphere> spheres = {{{0, 0, 0}, 0.4f}, {{3, 0, 0}, 0.4f}, {{0, 3, 0}, 0.4f}, {{1.5f, 1.5f, 3}, 0.6f}};
+    Objects o;
+    o.spheres = spheres.data();
+    o.sphere_count = 4;
+    const HashedGrid roomy(o, 64.0f, 1u << 20);
+    int wrong = 0, rays = 0, hits = 0;
+    for (const std::uint32_t M : {1u, 2u, 3u, 7u}) {
+        const HashedGrid tight(o, 64.0f, M);
+        for (int i = 0; i < 30; ++i)
+            for (int j = 0; j < 30; ++j) {
+                const Ray ray{{-1 + 0.17f * i, -1 + 0.17f * j, -5}, glm::normalize(vec3(0.05f, 0.02f, 1))};
+                ObjectHit a, b;
+                const bool fa = roomy.closest(ray, {0.0f, infinity}, o, a);
+                const bool fb = tight.closest(ray, {0.0f, infinity}, o, b);
+                ++rays;
+                hits += fb;
+                wrong += fa != fb || (fa && (a.object != b.object || a.t != b.t));
+            }
+        INFO("table size " << M << ": " << tight.stats().collisions << " collisions among " << tight.stats().occupied
+             << " occupied cells");
+        CHECK(tight.stats().collisions > 0);
+    }
+    INFO(wrong << " of " << rays << " rays answered differently with a table of 1 to 7 buckets than with 2^20; "
+         << hits << " of them hit a sphere");
+    CHECK(wrong == 0);
+    CHECK(hits >= rays / 20);
+}
