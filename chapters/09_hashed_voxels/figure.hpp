@@ -13,9 +13,9 @@ namespace rt::ch09 {
 
 constexpr int figure_stadium_depth = 5;
 
-// Why 256 cells per object: the lesson's table, on the stadium, has the hashed grid's fastest
-// renders from 64 to 1024 cells per object: cells small enough for the dense mesh, most of them
-// empty, which is what the hash table is for (the dense grid's 4 would put the mesh in one cell).
+// Why 256 cells per object: on the stadium (the lesson's table) the hashed grid renders 9 times
+// faster than at the dense grid's 4 (where the small mesh fills a few cells) with 86% of its cells
+// empty; 1024 is 10% faster still but takes 3.4 times the memory (74 MB against 21.5).
 constexpr float default_hashed_lambda = 256.0f;
 
 inline NffScene figure_scene()
