@@ -35,6 +35,7 @@ enum class Counter {
     mailbox_hits,  // object tests answered from a mailbox (chapter 08), not counted as tests
     table_lookups,          // hash-table lookups of the hashed grid (chapter 09)
     table_lookups_skipped,  // cells whose occupancy bit was off: no lookup (chapter 09)
+    nodes_visited,          // tree nodes whose box a ray was tested against (chapter 10)
     count_  // the number of counters, not a counter
 };
 

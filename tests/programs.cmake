@@ -93,7 +93,7 @@ set(objects_cones 8)
 set(objects_concave 29)
 set(objects_patches 70)
 set(scene_chapters 02_spheres_triangles 03_reflection_refraction 04_shadow_feelers 05_soft_shadows 06_depth_of_field
-  07_uniform_grid 08_mailboxing 09_hashed_voxels)
+  07_uniform_grid 08_mailboxing 09_hashed_voxels 10_hierarchies)
 foreach(chapter IN LISTS scene_chapters)
   foreach(scene IN LISTS kit_scenes)
     # 24 wide: the file's 400 x 400 keeps its aspect, so 24 x 24 = 576 eye rays.
@@ -120,7 +120,7 @@ foreach(chapter IN LISTS scene_chapters)
     --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_zero_area_patch.png")
 endforeach()
 # A chapter that shades mirrors and glass opaque says so (spheres.nff has both).
-foreach(chapter 04_shadow_feelers 05_soft_shadows 06_depth_of_field 07_uniform_grid 08_mailboxing 09_hashed_voxels)
+foreach(chapter 04_shadow_feelers 05_soft_shadows 06_depth_of_field 07_uniform_grid 08_mailboxing 09_hashed_voxels 10_hierarchies)
   rt_expect_exit(${chapter}.scene_says_what_it_does_not_model ${chapter} 0
     "${chapter}: note: [^\n]*spheres.nff: [1-9][0-9]* mirror \\(Ks > 0\\) and [1-9][0-9]* glass \\(T > 0\\) materials are shaded opaque"
     --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 16
@@ -168,14 +168,14 @@ set(classic_counts_hither_past_wall "eye_rays=9\neye_hits=0\nreflect_rays=0\nref
 set(classic_counts_refraction_pane "eye_rays=9\neye_hits=9\nreflect_rays=9\nrefract_rays=9\nshadow_rays=18\nshadow_blocked=9\nsecondary_hits=9\n")
 set(classic_counts_light_behind "eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=0\nshadow_blocked=0\nsecondary_hits=0\n")
 foreach(scene one_wall two_mirrors back_face total_internal_reflection hither_past_wall refraction_pane light_behind)
-  foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing 09_hashed_voxels)
+  foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing 09_hashed_voxels 10_hierarchies)
     rt_expect_exit(${chapter}.classic_${scene} ${chapter} 0 "^${classic_counts_${scene}}"
       --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/${scene}.nff" --classic --stats
       --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${chapter}_classic_${scene}.png")
   endforeach()
 endforeach()
 # --two-sided (SPD's teapot rule): the near wall's back is seen, lit by the light on the eye's side.
-foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing 09_hashed_voxels)
+foreach(chapter 04_shadow_feelers 07_uniform_grid 08_mailboxing 09_hashed_voxels 10_hierarchies)
   rt_expect_exit(${chapter}.classic_back_face_two_sided ${chapter} 0
     "^eye_rays=9\neye_hits=9\nreflect_rays=0\nrefract_rays=0\nshadow_rays=9\nshadow_blocked=0\nsecondary_hits=0\n"
     --scene "${CMAKE_CURRENT_SOURCE_DIR}/classic/back_face.nff" --classic --two-sided --stats
@@ -288,3 +288,25 @@ rt_expect_exit(09_hashed_voxels.table_size_with_grid 09_hashed_voxels 2
 rt_expect_exit(09_hashed_voxels.too_fine 09_hashed_voxels 2
   "a hashed grid of 4096 x 634 x 4096 cells passes the limit of 2\\^31 cell addresses: choose a smaller lambda"
   --lambda 900000 --width 8 --height 8)
+
+# Chapter 10: the BVH renders brute force's picture and rays, SAH and median, at 1 and 2 threads.
+foreach(scene IN LISTS kit_scenes)
+  rt_same_render(10_hierarchies.bvh_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute SECOND --accel bvh
+    ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
+endforeach()
+rt_same_render(10_hierarchies.sah_as_median_stadium 10_hierarchies FIRST --split median SECOND --split sah
+  ARGS --width 64 GENERATE stadium --depth 2)
+rt_same_render(10_hierarchies.bvh_as_hashed_stadium 10_hierarchies FIRST --accel hashed SECOND --accel bvh
+  ARGS --width 64 --classic GENERATE stadium --depth 2)
+rt_same_render(10_hierarchies.leaf_sizes_sticks 10_hierarchies FIRST --leaf-size 1 SECOND --leaf-size 16
+  ARGS --width 64 GENERATE sticks --depth 2)
+rt_same_render(10_hierarchies.bvh_threads_tree 10_hierarchies FIRST --threads 1 SECOND --threads 2
+  ARGS --width 64 --classic GENERATE tree --depth 4)
+rt_expect_exit(10_hierarchies.figure_stats 10_hierarchies 0
+  "rays_primary=600\n.*accel=bvh\nobjects=21250\nnodes_visited=[1-9][0-9]*\n.*bvh_nodes=[1-9][0-9]*\n.*bvh_depth=[1-9][0-9]*\n"
+  --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_stats.png")
+rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, hashed, grid or brute, got 'kd'" --accel kd)
+rt_expect_exit(10_hierarchies.unknown_split 10_hierarchies 2 "--split takes sah or median, got 'random'" --split random)
+rt_expect_exit(10_hierarchies.leaf_size_with_grid 10_hierarchies 2
+  "--leaf-size, --max-depth and --split shape the BVH; they apply to --accel bvh only" --accel grid --leaf-size 8)
+rt_expect_exit(10_hierarchies.depth_too_deep 10_hierarchies 2 "--max-depth must be between 0 and 62, got 63" --max-depth 63)

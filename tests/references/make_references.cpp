@@ -11,6 +11,7 @@
 #include "tests/ch07/picture.hpp"
 #include "tests/ch08/picture.hpp"
 #include "tests/ch09/picture.hpp"
+#include "tests/ch10/picture.hpp"
 #include "tests/scenes/scene_pictures.hpp"
 
 #include <functional>
@@ -31,6 +32,7 @@ int main()
         {"07_uniform_grid", rt::pictures::ch07},
         {"08_mailboxing", rt::pictures::ch08},
         {"09_hashed_voxels", rt::pictures::ch09},
+        {"10_hierarchies", rt::pictures::ch10},
     };
     for (const rt::pictures::ScenePicture& scene : rt::pictures::scene_pictures())
         pictures.emplace_back(scene.name, scene.render);

@@ -1,0 +1,38 @@
+// Chapter 10's figure: the teapot in a stadium (chapter 09's scene) through the bounding volume
+// hierarchy, beside the heat map of the nodes each pixel visited.
+#pragma once
+
+#include "09_hashed_voxels/figure.hpp"
+#include "10_hierarchies/bvh.hpp"
+
+#include <memory>
+#include <string>
+
+namespace rt::ch10 {
+
+inline NffScene figure_scene() { return ch09::figure_scene(); }
+
+// The accelerator by name (--accel): every structure of chapters 07-10.
+inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda,
+                                                     const BvhSettings& bvh)
+{
+    if (name == "bvh")
+        return std::make_unique<BvhAccel>(objects, bvh);
+    if (name == "hashed")
+        return ch09::make_accelerator(name, objects, lambda, 0);
+    if (name == "grid" || name == "brute")
+        return ch07::make_accelerator(name, objects, lambda);
+    throw InputError("--accel takes bvh, hashed, grid or brute, got '" + name + "'");
+}
+
+// The figure's scene through the BVH; with `cost`, what each pixel cost.
+inline Image render_through_bvh(const RenderSettings& settings, const BvhSettings& bvh = {}, CostMap* cost = nullptr)
+{
+    const SceneRender file = scene_render(figure_scene(), settings);
+    LitScene scene = lit_scene(file.scene);
+    const BvhAccel tree(objects_of(scene, lit_tests), bvh);
+    scene.accelerator = &tree;
+    return render_lit(file, scene, FeelerSettings{}, cost);
+}
+
+}  // namespace rt::ch10

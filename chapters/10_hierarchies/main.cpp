@@ -1,0 +1,240 @@
+// Chapter 10's program: renders the figure (the teapot in a stadium through the BVH, beside its
+// heat map) or any NFF scene (--scene, --classic) through any structure of chapters 07-10
+// (--accel). --sweep measures the trade: leaf size and depth limit against build time, bytes,
+// nodes per ray and render time; SAH against a median split; and every structure side by side on
+// the kit's generated scenes.
+#include "10_hierarchies/figure.hpp"
+#include "common/cli.hpp"
+#include "common/output.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace rt;
+
+namespace {
+
+struct Options {
+    CommonOptions common;
+    SceneOptions scene;
+    std::string accel = "bvh";
+    float lambda = ch07::default_lambda;
+    BvhSettings bvh;
+    std::string split = "sah";
+    bool sweep = false;
+    int repeat = 5;
+    std::string csv = "10_hierarchies.csv";
+};
+
+void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
+                           const Counts& counts)
+{
+    out << "accel=" << o.accel << '\n'
+        << "objects=" << objects << '\n'
+        << "nodes_visited=" << counted(counts, Counter::nodes_visited) << '\n'
+        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n';
+    if (const auto* b = dynamic_cast<const BvhAccel*>(accel))
+        out << "bvh_nodes=" << b->stats().nodes << '\n'
+            << "bvh_leaves=" << b->stats().leaves << '\n'
+            << "bvh_depth=" << b->stats().depth << '\n'
+            << "bytes=" << b->stats().bytes << '\n'
+            << "build_seconds=" << b->stats().build_seconds << '\n';
+    else if (accel)
+        out << "bytes=" << accel->bytes() << '\n';
+}
+
+SceneProgram scene_program(const Options& o)
+{
+    return {"10_hierarchies",
+            ch10::figure_scene,
+            {{"nodes", Counter::nodes_visited, "nodes visited per pixel"},
+             {"tests", Counter::intersection_tests, "intersection tests per pixel"},
+             {"cells", Counter::cells_visited, "cells visited per pixel"}},
+            [&o](const Objects& objects) { return ch10::make_accelerator(o.accel, objects, o.lambda, o.bvh); },
+            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
+                print_structure_stats(out, o, objects, accel, counts);
+            }};
+}
+
+// --- The trade ---
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Measured {
+    double build_ms = 0.0, render_ms = 0.0;
+    std::size_t bytes = 0;
+    double tests_per_ray = 0.0, nodes_per_ray = 0.0, cells_per_ray = 0.0;
+    std::vector<std::uint8_t> pixels;
+    BvhStats tree;
+};
+
+using Maker = std::function<std::unique_ptr<Accelerator>(const Objects&)>;
+
+Measured measure(const NffScene& nff, const Maker& make, const RenderSettings& settings, int repeat)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    const Objects objects = objects_of(scene, lit_tests);
+    Measured m;
+    std::unique_ptr<Accelerator> structure;
+    std::vector<double> builds;
+    for (int r = 0; r < repeat; ++r) {
+        const Timer timer;
+        structure = make(objects);
+        builds.push_back(1e3 * timer.seconds());
+    }
+    m.build_ms = structure ? median(builds) : 0.0;
+    m.bytes = structure ? structure->bytes() : 0;
+    if (const auto* b = dynamic_cast<const BvhAccel*>(structure.get()))
+        m.tree = b->stats();
+    scene.accelerator = structure.get();
+    reset_counters();
+    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
+    const Counts counts = total_counts();
+    const double rays = static_cast<double>(total_rays(counts));
+    m.tests_per_ray = counted(counts, Counter::intersection_tests) / rays;
+    m.nodes_per_ray = counted(counts, Counter::nodes_visited) / rays;
+    m.cells_per_ray = counted(counts, Counter::cells_visited) / rays;
+    std::vector<double> times;
+    for (int r = 0; r < repeat; ++r) {
+        const Timer timer;
+        render_lit(file, scene, FeelerSettings{});
+        times.push_back(1e3 * timer.seconds());
+    }
+    m.render_ms = median(times);
+    return m;
+}
+
+void sweep(const Options& o, const CommandLine& cli)
+{
+    RenderSettings settings = render_settings(o.common);
+    settings.show_progress = false;
+    if (!cli.given("--threads"))
+        settings.threads = 1;
+    if (!cli.given("--width"))
+        settings.width = 160;
+    if (!cli.given("--height"))
+        settings.height = 90;
+    std::cerr << "measuring the BVH's leaf size, depth and split, then every structure on five scenes...\n";
+    std::ofstream csv(o.csv);
+    csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms\n";
+    const NffScene stadium = ch10::figure_scene();
+    const auto objects_in = [](const NffScene& s) { return s.spheres.size() + s.triangles.size() + s.cones.size(); };
+    std::cout << "\nthe BVH on " << stadium.name << ", " << settings.width << "x" << settings.height
+              << ", 1 thread, medians of " << o.repeat << " runs\n\n"
+              << "| split | leaf size | depth limit | nodes | depth | MB | build ms | nodes/ray | tests/ray | render ms |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|\n";
+    std::vector<std::uint8_t> reference;
+    const auto bvh_row = [&](BvhSplit split, int leaf, int depth) {
+        BvhSettings b;
+        b.split = split;
+        b.leaf_size = leaf;
+        b.max_depth = depth;
+        const Measured m = measure(stadium, [&](const Objects& objs) { return std::make_unique<BvhAccel>(objs, b); },
+                                   settings, o.repeat);
+        if (reference.empty())
+            reference = m.pixels;
+        if (m.pixels != reference)
+            throw std::runtime_error("a BVH's image differs from another's: a bug of the kit");
+        std::cout << std::fixed << "| " << (split == BvhSplit::sah ? "SAH" : "median") << " | " << leaf << " | " << depth
+                  << " | " << m.tree.nodes << " | " << m.tree.depth << " | " << std::setprecision(2)
+                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1) << m.build_ms << " | "
+                  << m.nodes_per_ray << " | " << m.tests_per_ray << " | " << m.render_ms << " |\n";
+        csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",bvh," << (split == BvhSplit::sah ? "sah" : "median")
+            << ":leaf" << leaf << ":depth" << depth << ',' << m.build_ms << ',' << m.bytes << ',' << m.tests_per_ray << ','
+            << m.nodes_per_ray << ",0," << m.render_ms << '\n';
+    };
+    for (const int leaf : {1, 2, 4, 8, 16, 32})
+        bvh_row(BvhSplit::sah, leaf, 48);
+    for (const int depth : {4, 8, 12, 16})
+        bvh_row(BvhSplit::sah, 4, depth);
+    for (const int leaf : {4})
+        bvh_row(BvhSplit::median, leaf, 48);
+
+    std::cout << "\nevery structure side by side, " << settings.width << "x" << settings.height
+              << ", 1 thread, medians of " << o.repeat << " runs; every image identical to the BVH's\n\n"
+              << "| scene | objects | structure | MB | build ms | tests/ray | nodes or cells/ray | render ms |\n"
+                 "|---|---|---|---|---|---|---|---|\n";
+    const std::vector<NffScene> scenes = {
+        ch07::generated_scene(write_stadium, 5, "teapot in a stadium 5"),
+        ch07::generated_scene(write_sticks, 5, "sticks 5"),
+        ch07::generated_scene(write_mountain, 7, "mountain 7"),
+        ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"),
+        ch07::generated_scene(write_pyramid, 7, "pyramid 7"),
+    };
+    for (const NffScene& nff : scenes) {
+        std::vector<std::uint8_t> same;
+        for (const std::string& name : {"bvh", "grid", "hashed"}) {
+            const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
+            Measured m;
+            try {
+                m = measure(nff, [&](const Objects& objs) { return ch10::make_accelerator(name, objs, lambda, BvhSettings{}); },
+                            settings, o.repeat);
+            } catch (const InputError& e) {
+                std::cout << "| " << nff.name << " | " << objects_in(nff) << " | " << name << " | " << e.what() << " |||||\n";
+                continue;
+            }
+            if (same.empty())
+                same = m.pixels;
+            if (m.pixels != same)
+                throw std::runtime_error("the " + name + "'s image differs from the BVH's on " + nff.name + ": a bug of the kit");
+            std::cout << std::fixed << "| " << nff.name << " | " << objects_in(nff) << " | " << name << " | "
+                      << std::setprecision(2) << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
+                      << m.build_ms << " | " << m.tests_per_ray << " | "
+                      << (name == "bvh" ? m.nodes_per_ray : m.cells_per_ray) << " | " << m.render_ms << " |\n";
+            csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << name << ",default," << m.build_ms << ',' << m.bytes
+                << ',' << m.tests_per_ray << ',' << m.nodes_per_ray << ',' << m.cells_per_ray << ',' << m.render_ms << '\n';
+        }
+    }
+    std::cout << "\nwrote " << o.csv << '\n';
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    return run_program("10_hierarchies", [&] {
+        Options o;
+        o.common.out = "10_hierarchies.png";
+        CommandLine cli("10_hierarchies", "Hierarchies: a bounding volume hierarchy built by the surface area heuristic.");
+        add_common_options(cli, o.common);
+        const SceneProgram program = scene_program(o);
+        add_scene_program_options(cli, o.scene, program);
+        cli.option("--accel", o.accel, "what answers the queries: bvh, hashed (chapter 09), grid (07) or brute");
+        cli.option("--lambda", o.lambda, "with grid or hashed: cells per object", 0.0f, 1e6f);
+        cli.option("--leaf-size", o.bvh.leaf_size, "with bvh: the most objects a leaf keeps before splitting", 1, 65535);
+        cli.option("--max-depth", o.bvh.max_depth, "with bvh: the deepest a leaf may lie (the root is 0)", 0,
+                   bvh_stack_size - 2);
+        cli.option("--split", o.split, "with bvh: sah (the surface area heuristic) or median");
+        cli.flag("--sweep", o.sweep, "measure leaf size, depth and split, and every structure side by side");
+        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
+        cli.option("--csv", o.csv, "where --sweep writes its table");
+        if (!cli.parse(argc, argv, std::cout))
+            return 0;
+        if (o.accel != "bvh" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes bvh, hashed, grid or brute, got '" + o.accel + "'");
+        if (o.split != "sah" && o.split != "median")
+            throw InputError("--split takes sah or median, got '" + o.split + "'");
+        o.bvh.split = o.split == "sah" ? BvhSplit::sah : BvhSplit::median;
+        if (o.accel != "bvh" && (cli.given("--leaf-size") || cli.given("--max-depth") || cli.given("--split")))
+            throw InputError("--leaf-size, --max-depth and --split shape the BVH; they apply to --accel bvh only");
+        if (o.accel == "hashed" && !cli.given("--lambda"))
+            o.lambda = ch09::default_hashed_lambda;
+        check_scene_without_sweep(o.scene.scene, o.sweep);
+        check_scene_program_options(program, o.scene, o.common);
+        if (o.sweep) {
+            check_writable(o.csv, "CSV");
+            sweep(o, cli);
+            return 0;
+        }
+        return render_scene_program(program, o.common, o.scene, cli);
+    });
+}

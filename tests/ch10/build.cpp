@@ -1,0 +1,91 @@
+// EXERCISES 10.1-10.3: the surface area heuristic's cost, the best plane between bins, and when a
+// node becomes a leaf.
+#include "10_hierarchies/bvh.hpp"
+#include "tests/ch07/describe.hpp"
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+Bounds box(const point3& lo, const point3& hi) { return {lo, hi}; }
+
+void check_cost(const Bounds& parent, const Bounds& l, int nl, const Bounds& r, int nr, float expected, const char* why)
+{
+    const float got = sah_cost(parent, l, nl, r, nr);
+    INFO("sah_cost(parent " << show(parent) << ", left " << show(l) << " with " << nl << ", right " << show(r) << " with "
+         << nr << "): got " << got << ", expected " << expected << ": " << why);
+    CHECK(std::abs(got - expected) <= 1e-6f * std::max(1.0f, expected));
+}
+
+}  // namespace
+
+GRADED_TEST("sah_cost: each child's objects weighted by its share of the parent's surface area, plus a traversal", "10.1", 4)
+{
+    const Bounds cube = box({0, 0, 0}, {2, 2, 2});  // half area 12
+    check_cost(cube, box({0, 0, 0}, {1, 2, 2}), 3, box({1, 0, 0}, {2, 2, 2}), 5, 0.125f + (8.0f / 12) * 3 + (8.0f / 12) * 5,
+               "two halves of a cube: each 8 / 12 of its area");
+    check_cost(cube, box({0, 0, 0}, {2, 2, 2}), 4, box({0, 0, 0}, {0.5f, 0.5f, 0.5f}), 1, 0.125f + 4 + 0.75f / 12,
+               "a child as large as the parent counts all its objects");
+    check_cost(cube, box({0, 0, 0}, {1, 1, 1}), 2, Bounds{}, 0, 0.125f + (3.0f / 12) * 2, "an empty child adds nothing");
+}
+
+STABILITY_TEST("sah_cost: a parent of no area (every object at one point) gives each child a share of 1", "10.1", 2)
+{
+    const Bounds point = box({1, 1, 1}, {1, 1, 1});
+    check_cost(point, point, 2, point, 3, 0.125f + 5, "no area: the children's shares are 1");
+}
+
+GRADED_TEST("best_split: the cheapest plane between bins, by the SAH, with both sides non-empty", "10.2", 5)
+{
+    // Four bins along x, one unit wide each, of a parent 4 x 1 x 1 (half area 9).
+    const Bounds parent = box({0, 0, 0}, {4, 1, 1});
+    std::vector<SahBin> bins(4);
+    for (int k = 0; k < 4; ++k)
+        bins[k].bounds = box({static_cast<float>(k), 0, 0}, {static_cast<float>(k) + 1, 1, 1});
+    bins[0].count = 10;
+    bins[1].count = 0;
+    bins[1].bounds = Bounds{};
+    bins[2].count = 1;
+    bins[3].count = 1;
+    const SahSplit got = best_split(parent, bins);
+    // Plane 0: 10 in [0,1] (area 3) against 2 in [2,4] (area 5): 0.125 + 30/9 + 10/9 = 4.569.
+    // Plane 1: the same sides (bin 1 is empty): equal cost, so plane 0 stays.
+    // Plane 2: 11 in [0,3] (area 7) against 1 in [3,4] (area 3): 0.125 + 77/9 + 3/9 = 8.93.
+    const float expected = 0.125f + 30.0f / 9 + 10.0f / 9;
+    INFO("bins along x with 10, 0, 1 and 1 objects: got the plane after bin " << got.split << " at cost " << got.cost
+         << ", expected after bin 0 at " << expected << " (the plane after the empty bin 1 costs the same; the first wins)");
+    CHECK(got.split == 0);
+    CHECK(std::abs(got.cost - expected) < 1e-5f);
+
+    std::vector<SahBin> one(3);
+    one[1].count = 7;
+    one[1].bounds = box({1, 0, 0}, {2, 1, 1});
+    const SahSplit none = best_split(parent, one);
+    INFO("only bin 1 holds objects: got split " << none.split << " at " << none.cost << ", expected no split (-1, infinity)");
+    CHECK(none.split == -1);
+    CHECK(std::isinf(none.cost));
+}
+
+GRADED_TEST("make_leaf: at most leaf_size objects, at the depth limit, or when no split pays", "10.3", 4)
+{
+    struct Case {
+        int n, depth, leaf, max_depth;
+        float cost;
+        bool leaf_expected;
+        const char* why;
+    };
+    for (const Case& c : std::vector<Case>{{4, 3, 4, 20, 1.0f, true, "exactly leaf_size objects"},
+                                           {5, 3, 4, 20, 1.0f, false, "one more, and a split that pays"},
+                                           {100, 20, 4, 20, 1.0f, true, "at the depth limit"},
+                                           {100, 19, 4, 20, 1.0f, false, "one above it"},
+                                           {6, 2, 4, 20, 6.5f, true, "the best split costs more than testing all 6"},
+                                           {6, 2, 4, 20, 6.0f, true, "it costs as much"},
+                                           {6, 2, 4, 20, infinity, true, "no split is possible"}}) {
+        const bool got = make_leaf(c.n, c.depth, c.leaf, c.max_depth, c.cost);
+        INFO("make_leaf(" << c.n << " objects, depth " << c.depth << ", leaf_size " << c.leaf << ", max_depth "
+             << c.max_depth << ", best split " << c.cost << "): got " << std::boolalpha << got << ", expected "
+             << c.leaf_expected << ": " << c.why);
+        CHECK(got == c.leaf_expected);
+    }
+}
