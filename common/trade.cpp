@@ -6,6 +6,7 @@
 #include "common/stats.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <cassert>
 #include <cmath>
 #include <filesystem>
@@ -26,6 +27,15 @@ double rmse(const Image& a, const Image& b)
     return std::sqrt(sum / (3.0 * static_cast<double>(a.pixels.size())));
 }
 
+double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 double median_seconds(int repeats, const std::function<void()>& work)
 {
     std::vector<double> seconds;
@@ -34,9 +44,7 @@ double median_seconds(int repeats, const std::function<void()>& work)
         work();
         seconds.push_back(timer.seconds());
     }
-    std::sort(seconds.begin(), seconds.end());
-    const size_t n = seconds.size();
-    return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+    return median(std::move(seconds));
 }
 
 static double rays_per_second(const TradeRow& row)

@@ -29,6 +29,9 @@ struct TradeTable {
 // Root mean square difference of two equal-sized images over all channels, in linear RGB.
 double rmse(const Image& a, const Image& b);
 
+// The median of the values (the mean of the middle two for an even count); 0 for none.
+double median(std::vector<double> values);
+
 // Runs `work` `repeats` times and returns the median wall-clock seconds.
 double median_seconds(int repeats, const std::function<void()>& work);
 

@@ -133,13 +133,6 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
 
 // --- The cost of shadow feelers: any-hit against closest-hit ---
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // The figure rendered without feelers, with any-hit feelers and with closest-hit ones. The runs are
 // interleaved (one of each per round, --repeat rounds) so that a change in the machine's load
 // falls on every row alike; each row's time is its median. The feelers' own cost is a row's time

@@ -4,6 +4,7 @@
 // each pixel cost. --sweep measures the trade: the grid's density lambda against build time,
 // bytes, tests, cells and render time, and brute force against the grid as the scene grows.
 #include "07_uniform_grid/figure.hpp"
+#include "07_uniform_grid/measure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
@@ -74,48 +75,25 @@ struct Measured {
     int runs = 0;
 };
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-// One structure on one scene: its build (median of `runs`), one counted render, and the render's
-// median time over `runs` more.
+// One structure on one scene (measure.hpp): its build (median of `runs`), one counted render, and
+// the render's median time over `runs` more.
 Measured measure(const NffScene& nff, const std::string& accel, float lambda, const RenderSettings& settings, int runs)
 {
-    const SceneRender file = scene_render(nff, settings);
-    LitScene scene = lit_scene(file.scene);
+    const Measurement r = measure_structure(
+        nff, [&](const Objects& objects) { return ch07::make_accelerator(accel, objects, lambda); }, settings,
+        accel == "brute" ? 1 : runs, runs);
     Measured m;
-    m.objects = objects_of(scene, lit_tests).size();
+    m.objects = r.objects;
     m.runs = runs;
-    std::unique_ptr<Accelerator> structure;
-    std::vector<double> builds;
-    for (int r = 0; r < (accel == "brute" ? 1 : runs); ++r) {
-        const Timer timer;
-        structure = ch07::make_accelerator(accel, objects_of(scene, lit_tests), lambda);
-        builds.push_back(1e3 * timer.seconds());
-    }
-    m.build_ms = accel == "brute" ? 0.0 : median(builds);
-    scene.accelerator = structure.get();
-    if (const auto* grid = dynamic_cast<const UniformGrid*>(structure.get())) {
+    m.build_ms = r.build_ms;
+    m.render_ms = r.render_ms;
+    m.bytes = r.bytes;
+    m.rays = r.rays;
+    m.tests_per_ray = r.per_ray(Counter::intersection_tests);
+    m.cells_per_ray = r.per_ray(Counter::cells_visited);
+    m.pixels = r.pixels;
+    if (const auto* grid = dynamic_cast<const UniformGrid*>(r.structure.get()))
         m.grid = grid->stats();
-        m.bytes = grid->bytes();
-    }
-    reset_counters();
-    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
-    const Counts counts = total_counts();
-    m.rays = total_rays(counts);
-    m.tests_per_ray = static_cast<double>(counted(counts, Counter::intersection_tests)) / static_cast<double>(m.rays);
-    m.cells_per_ray = static_cast<double>(counted(counts, Counter::cells_visited)) / static_cast<double>(m.rays);
-    std::vector<double> times;
-    for (int r = 0; r < runs; ++r) {
-        const Timer timer;
-        render_lit(file, scene, FeelerSettings{});
-        times.push_back(1e3 * timer.seconds());
-    }
-    m.render_ms = median(times);
     return m;
 }
 
@@ -226,15 +204,7 @@ void print_comparison_heading(const std::string& what, const RenderSettings& set
 
 void sweep(const Options& o, const CommandLine& cli)
 {
-    RenderSettings settings = render_settings(o.common);
-    settings.show_progress = false;
-    // One thread unless asked: a single thread's times vary least from run to run.
-    if (!cli.given("--threads"))
-        settings.threads = 1;
-    if (!cli.given("--width"))
-        settings.width = 64;
-    if (!cli.given("--height"))
-        settings.height = 36;
+    const RenderSettings settings = sweep_settings(o.common, cli, 64, 36);
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
     std::ofstream n_csv = open_csv(csv_beside(o.csv, "_n"), comparison_header);
     std::ostringstream what;
@@ -248,12 +218,7 @@ void sweep(const Options& o, const CommandLine& cli)
     compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv);
     compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv);
     compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv);
-    RenderSettings lambda_settings = settings;
-    if (!cli.given("--width"))
-        lambda_settings.width = 320;
-    if (!cli.given("--height"))
-        lambda_settings.height = 180;
-    sweep_lambda(o, lambda_settings);
+    sweep_lambda(o, sweep_settings(o.common, cli, 320, 180));
     measure_drift(1000);
     std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << " and " << csv_beside(o.csv, "_scenes") << '\n';
 }
@@ -280,13 +245,6 @@ int main(int argc, char** argv)
             throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
         if (o.accel == "brute" && cli.given("--lambda"))
             throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
-        check_scene_without_sweep(o.scene.scene, o.sweep);
-        check_scene_program_options(program, o.scene, o.common);
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
-            sweep(o, cli);
-            return 0;
-        }
-        return render_scene_program(program, o.common, o.scene, cli);
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
     });
 }

@@ -137,4 +137,20 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
     }, stats(print_stats, accel.get(), objects.size()));
 }
 
+// What a scene program does once its own options are checked: checks the shared ones, then runs
+// its sweep (--sweep, writing `csv`) or renders.
+inline int finish_scene_program(const SceneProgram& program, const CommonOptions& common, const SceneOptions& o,
+                                const CommandLine& cli, bool sweep, const std::string& csv,
+                                const std::function<void()>& run_sweep)
+{
+    check_scene_without_sweep(o.scene, sweep);
+    check_scene_program_options(program, o, common);
+    if (sweep) {
+        check_writable(csv, "CSV");
+        run_sweep();
+        return 0;
+    }
+    return render_scene_program(program, common, o, cli);
+}
+
 }  // namespace rt

@@ -5,6 +5,7 @@
 // kind (primary, shadow, secondary), on three scenes.
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+#include "07_uniform_grid/measure.hpp"
 #include "08_mailboxing/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
@@ -103,13 +104,6 @@ std::vector<RaySet> ray_sets(const SceneRender& file, const LitScene& scene)
     return {primary, shadow, secondary};
 }
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 struct Run {
     double ms = 0.0;
     std::uint64_t tests = 0, saved = 0;
@@ -176,12 +170,7 @@ bool same_answers(const Run& a, const Run& b)
 
 void sweep(const Options& o, const CommandLine& cli)
 {
-    RenderSettings settings = render_settings(o.common);
-    settings.show_progress = false;
-    if (!cli.given("--width"))
-        settings.width = 320;
-    if (!cli.given("--height"))
-        settings.height = 180;
+    const RenderSettings settings = sweep_settings(o.common, cli, 320, 180);
     std::cerr << "measuring what the mailboxes save, by density and ray kind, on three scenes...\n";
     std::ofstream csv(o.csv);
     csv << "scene,objects,lambda,references_per_object,kind,count,tests_per_ray_grid,tests_per_ray_mailboxes,"
@@ -251,13 +240,6 @@ int main(int argc, char** argv)
             throw InputError("--mailbox takes on or off, got '" + o.mailbox + "'");
         if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--mailbox")))
             throw InputError("--lambda and --mailbox set up the grid; they do not apply to --accel brute");
-        check_scene_without_sweep(o.scene.scene, o.sweep);
-        check_scene_program_options(program, o.scene, o.common);
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
-            sweep(o, cli);
-            return 0;
-        }
-        return render_scene_program(program, o.common, o.scene, cli);
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
     });
 }

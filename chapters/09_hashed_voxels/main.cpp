@@ -3,9 +3,11 @@
 // or the hashed one (--accel). --sweep measures the trade: the table size M against collisions,
 // bytes and time; the hashed grid against the dense one at equal resolution and past the dense
 // grid's limit.
+#include "07_uniform_grid/measure.hpp"
 #include "09_hashed_voxels/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
+#include "common/trade.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -75,13 +77,6 @@ SceneProgram scene_program(const Options& o)
 
 // --- The trade ---
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 struct Measured {
     std::string structure;
     double build_ms = 0.0, render_ms = 0.0;
@@ -96,46 +91,29 @@ struct Measured {
 Measured measure(const NffScene& nff, const std::string& accel, float lambda, std::uint32_t table_size,
                  const RenderSettings& settings, int repeat)
 {
-    const SceneRender file = scene_render(nff, settings);
-    LitScene scene = lit_scene(file.scene);
-    const Objects objects = objects_of(scene, lit_tests);
+    const Measurement r = measure_structure(
+        nff, [&](const Objects& objects) { return ch09::make_accelerator(accel, objects, lambda, table_size); }, settings,
+        accel == "brute" ? 1 : repeat, repeat);
     Measured m;
     m.structure = accel;
-    std::unique_ptr<Accelerator> structure;
-    std::vector<double> builds;
-    for (int r = 0; r < (accel == "brute" ? 1 : repeat); ++r) {
-        const Timer timer;
-        structure = ch09::make_accelerator(accel, objects, lambda, table_size);
-        builds.push_back(1e3 * timer.seconds());
-    }
-    m.build_ms = accel == "brute" ? 0.0 : median(builds);
-    if (const auto* h = dynamic_cast<const HashedGrid*>(structure.get())) {
+    m.build_ms = r.build_ms;
+    m.render_ms = r.render_ms;
+    m.bytes = r.bytes;
+    m.pixels = r.pixels;
+    m.tests_per_ray = r.per_ray(Counter::intersection_tests);
+    m.cells_per_ray = r.per_ray(Counter::cells_visited);
+    m.lookups_per_ray = r.per_ray(Counter::table_lookups);
+    m.skipped_per_ray = r.per_ray(Counter::table_lookups_skipped);
+    if (const auto* h = dynamic_cast<const HashedGrid*>(r.structure.get())) {
         m.resolution = h->stats().resolution;
         m.occupied = h->stats().occupied;
         m.references = h->stats().references;
         m.collisions = h->stats().collisions;
         m.M = h->stats().M;
-    } else if (const auto* g = dynamic_cast<const UniformGrid*>(structure.get())) {
+    } else if (const auto* g = dynamic_cast<const UniformGrid*>(r.structure.get())) {
         m.resolution = g->stats().resolution;
         m.references = g->stats().references;
     }
-    m.bytes = structure ? structure->bytes() : 0;
-    scene.accelerator = structure.get();
-    reset_counters();
-    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
-    const Counts counts = total_counts();
-    const double rays = static_cast<double>(total_rays(counts));
-    m.tests_per_ray = counted(counts, Counter::intersection_tests) / rays;
-    m.cells_per_ray = counted(counts, Counter::cells_visited) / rays;
-    m.lookups_per_ray = counted(counts, Counter::table_lookups) / rays;
-    m.skipped_per_ray = counted(counts, Counter::table_lookups_skipped) / rays;
-    std::vector<double> times;
-    for (int r = 0; r < repeat; ++r) {
-        const Timer timer;
-        render_lit(file, scene, FeelerSettings{});
-        times.push_back(1e3 * timer.seconds());
-    }
-    m.render_ms = median(times);
     return m;
 }
 
@@ -148,14 +126,7 @@ std::string resolution(const cell3& n)
 
 void sweep(const Options& o, const CommandLine& cli)
 {
-    RenderSettings settings = render_settings(o.common);
-    settings.show_progress = false;
-    if (!cli.given("--threads"))
-        settings.threads = 1;
-    if (!cli.given("--width"))
-        settings.width = 160;
-    if (!cli.given("--height"))
-        settings.height = 90;
+    const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
     std::cerr << "measuring the hashed grid against the dense one, then the table size (a few minutes)...\n";
     const NffScene stadium = ch09::figure_scene();
     const Measured brute = measure(stadium, "brute", 1.0f, 0, settings, 1);
@@ -239,13 +210,6 @@ int main(int argc, char** argv)
             throw InputError("--lambda and --table-size set up a grid; they do not apply to --accel brute");
         if (o.accel != "hashed" && cli.given("--table-size"))
             throw InputError("--table-size sizes the hashed grid's table; it applies to --accel hashed only");
-        check_scene_without_sweep(o.scene.scene, o.sweep);
-        check_scene_program_options(program, o.scene, o.common);
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
-            sweep(o, cli);
-            return 0;
-        }
-        return render_scene_program(program, o.common, o.scene, cli);
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
     });
 }

@@ -3,9 +3,11 @@
 // (--accel). --sweep measures the trade: leaf size and depth limit against build time, bytes,
 // nodes per ray and render time; SAH against a median split; and every structure side by side on
 // the kit's generated scenes.
+#include "07_uniform_grid/measure.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
+#include "common/trade.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -61,13 +63,6 @@ SceneProgram scene_program(const Options& o)
 
 // --- The trade ---
 
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 struct Measured {
     double build_ms = 0.0, render_ms = 0.0;
     std::size_t bytes = 0;
@@ -76,53 +71,25 @@ struct Measured {
     BvhStats tree;
 };
 
-using Maker = std::function<std::unique_ptr<Accelerator>(const Objects&)>;
-
-Measured measure(const NffScene& nff, const Maker& make, const RenderSettings& settings, int repeat)
+Measured measure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings, int repeat)
 {
-    const SceneRender file = scene_render(nff, settings);
-    LitScene scene = lit_scene(file.scene);
-    const Objects objects = objects_of(scene, lit_tests);
+    const Measurement r = measure_structure(nff, make, settings, repeat, repeat);
     Measured m;
-    std::unique_ptr<Accelerator> structure;
-    std::vector<double> builds;
-    for (int r = 0; r < repeat; ++r) {
-        const Timer timer;
-        structure = make(objects);
-        builds.push_back(1e3 * timer.seconds());
-    }
-    m.build_ms = structure ? median(builds) : 0.0;
-    m.bytes = structure ? structure->bytes() : 0;
-    if (const auto* b = dynamic_cast<const BvhAccel*>(structure.get()))
+    m.build_ms = r.build_ms;
+    m.render_ms = r.render_ms;
+    m.bytes = r.bytes;
+    m.pixels = r.pixels;
+    m.tests_per_ray = r.per_ray(Counter::intersection_tests);
+    m.nodes_per_ray = r.per_ray(Counter::nodes_visited);
+    m.cells_per_ray = r.per_ray(Counter::cells_visited);
+    if (const auto* b = dynamic_cast<const BvhAccel*>(r.structure.get()))
         m.tree = b->stats();
-    scene.accelerator = structure.get();
-    reset_counters();
-    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
-    const Counts counts = total_counts();
-    const double rays = static_cast<double>(total_rays(counts));
-    m.tests_per_ray = counted(counts, Counter::intersection_tests) / rays;
-    m.nodes_per_ray = counted(counts, Counter::nodes_visited) / rays;
-    m.cells_per_ray = counted(counts, Counter::cells_visited) / rays;
-    std::vector<double> times;
-    for (int r = 0; r < repeat; ++r) {
-        const Timer timer;
-        render_lit(file, scene, FeelerSettings{});
-        times.push_back(1e3 * timer.seconds());
-    }
-    m.render_ms = median(times);
     return m;
 }
 
 void sweep(const Options& o, const CommandLine& cli)
 {
-    RenderSettings settings = render_settings(o.common);
-    settings.show_progress = false;
-    if (!cli.given("--threads"))
-        settings.threads = 1;
-    if (!cli.given("--width"))
-        settings.width = 160;
-    if (!cli.given("--height"))
-        settings.height = 90;
+    const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
     std::cerr << "measuring the BVH's leaf size, depth and split, then every structure on five scenes...\n";
     std::ofstream csv(o.csv);
     csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms\n";
@@ -228,13 +195,6 @@ int main(int argc, char** argv)
             throw InputError("--leaf-size, --max-depth and --split shape the BVH; they apply to --accel bvh only");
         if (o.accel == "hashed" && !cli.given("--lambda"))
             o.lambda = ch09::default_hashed_lambda;
-        check_scene_without_sweep(o.scene.scene, o.sweep);
-        check_scene_program_options(program, o.scene, o.common);
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
-            sweep(o, cli);
-            return 0;
-        }
-        return render_scene_program(program, o.common, o.scene, cli);
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
     });
 }

@@ -1,0 +1,68 @@
+// How the sweeps of chapters 07-10 measure a structure on a scene: its build (the median of
+// several), one counted render (its picture, to hold against brute force's, and its work per ray),
+// and the median time of several more renders. One thread unless asked, since a single thread's
+// times vary least from run to run.
+#pragma once
+
+#include "07_uniform_grid/scene_program.hpp"
+#include "common/trade.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace rt {
+
+struct Measurement {
+    std::unique_ptr<Accelerator> structure;  // kept, for the chapter's own statistics (nullptr: brute force)
+    int objects = 0;
+    double build_ms = 0.0, render_ms = 0.0;
+    std::size_t bytes = 0;
+    std::uint64_t rays = 0;
+    Counts counts{};                   // of the counted render
+    std::vector<std::uint8_t> pixels;  // its 8-bit sRGB picture
+
+    double per_ray(Counter c) const { return rays ? static_cast<double>(counted(counts, c)) / static_cast<double>(rays) : 0.0; }
+};
+
+using StructureMaker = std::function<std::unique_ptr<Accelerator>(const Objects&)>;
+
+// `builds` builds (1 is enough for brute force, which builds nothing) and `renders` timed renders.
+inline Measurement measure_structure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings,
+                                     int builds, int renders)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    const Objects objects = objects_of(scene, lit_tests);
+    Measurement m;
+    m.objects = objects.size();
+    m.build_ms = 1e3 * median_seconds(builds, [&] { m.structure = make(objects); });
+    if (!m.structure)
+        m.build_ms = 0.0;
+    m.bytes = m.structure ? m.structure->bytes() : 0;
+    scene.accelerator = m.structure.get();
+    reset_counters();
+    m.pixels = to_srgb8(render_lit(file, scene, FeelerSettings{}));
+    m.counts = total_counts();
+    m.rays = total_rays(m.counts);
+    m.render_ms = 1e3 * median_seconds(renders, [&] { render_lit(file, scene, FeelerSettings{}); });
+    return m;
+}
+
+// The sweeps' render: the options' settings, with no progress line, one thread unless --threads
+// was given, and the sweep's own size unless --width or --height was.
+inline RenderSettings sweep_settings(const CommonOptions& common, const CommandLine& cli, int width, int height)
+{
+    RenderSettings s = render_settings(common);
+    s.show_progress = false;
+    if (!cli.given("--threads"))
+        s.threads = 1;
+    if (!cli.given("--width"))
+        s.width = width;
+    if (!cli.given("--height"))
+        s.height = height;
+    return s;
+}
+
+}  // namespace rt
