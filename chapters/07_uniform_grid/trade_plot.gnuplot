@@ -13,7 +13,7 @@ grows = csv[1:strlen(csv) - 4].'_n.csv'
 set multiplot layout 1,2 title title.': brute force against the grid, and the grid against its density'
 set grid
 set logscale xy
-set format x '10^{%T}'
+set format x '1e%T'
 set xlabel 'objects (the fractal mountain, depth 1 to 8)'
 set ylabel 'render ms (median)'
 set key top left

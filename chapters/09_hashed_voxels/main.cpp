@@ -160,6 +160,8 @@ void sweep(const Options& o, const CommandLine& cli)
             row(measure(stadium, "grid", lambda, 0, settings, o.repeat), lambda);
         } catch (const InputError&) {
             std::cout << "| grid | " << lambda << " | the dense grid cannot hold it (over 2^25 cells) | | | | | | | | | | |\n";
+            // A row all the same, so that the plot's rows still alternate dense, hashed.
+            csv << "\"" << stadium.name << "\",grid," << lambda << ",refused,,,,,nan,nan,nan,nan,nan,nan,nan\n";
         }
         row(measure(stadium, "hashed", lambda, 0, settings, o.repeat), lambda);
     }
