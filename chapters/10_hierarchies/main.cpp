@@ -139,7 +139,7 @@ void sweep(const Options& o, const CommandLine& cli)
     };
     for (const NffScene& nff : scenes) {
         std::vector<std::uint8_t> same;
-        for (const std::string& name : {"bvh", "grid", "hashed"}) {
+        for (const std::string name : {"bvh", "grid", "hashed"}) {
             const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
             Measured m;
             try {
