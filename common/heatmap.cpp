@@ -73,15 +73,26 @@ int draw_text(Image& image, int x, int y, const std::string& text, const color& 
     return stb_easy_font_width(copy.data()) * scale;
 }
 
-Image heat_image(const CostMap& map, const std::string& what, double top)
+double heat_top(const CostMap& map)
 {
-    if (top <= 0.0 && !map.cost.empty()) {
-        std::vector<std::uint64_t> sorted = map.cost;
-        const size_t k = std::min(sorted.size() - 1, static_cast<size_t>(0.995 * static_cast<double>(sorted.size())));
-        std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(k), sorted.end());
-        top = static_cast<double>(sorted[k]);
-    }
-    top = nice_ceiling(std::max(top, 1.0));
+    if (map.cost.empty())
+        return 0.0;
+    std::vector<std::uint64_t> sorted = map.cost;
+    const size_t k = std::min(sorted.size() - 1, static_cast<size_t>(0.995 * static_cast<double>(sorted.size())));
+    std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(k), sorted.end());
+    return static_cast<double>(sorted[k]);
+}
+
+Image heat_image(const CostMap& map, const std::string& what, double top, HeatScale scale)
+{
+    if (top <= 0.0)
+        top = heat_top(map);
+    const bool log_scale = scale == HeatScale::log;
+    top = log_scale ? std::pow(10.0, std::ceil(std::log10(std::max(top, 10.0)))) : nice_ceiling(std::max(top, 1.0));
+    // Where a cost lies on the bar, 0 at its bottom and 1 at its top.
+    const auto level = [&](double cost) {
+        return static_cast<float>(log_scale ? std::log10(1.0 + cost) / std::log10(1.0 + top) : cost / top);
+    };
     // The map, then a bar 24 pixels wide with tick labels to its right.
     constexpr int gap = 12, bar = 24, label_room = 150;
     const int h = map.height;
@@ -91,20 +102,32 @@ Image heat_image(const CostMap& map, const std::string& what, double top)
         c = background;
     for (int j = 0; j < h; ++j)
         for (int i = 0; i < map.width; ++i)
-            image.at(i, j) = viridis(static_cast<float>(static_cast<double>(map.cost[static_cast<size_t>(j) * map.width + i]) / top));
-    // The bar runs from `top` at its top to 0 at its bottom, with room for the caption below it.
-    const int bar_top = 8, bar_bottom = std::max(bar_top + 2, h - 34);
+            image.at(i, j) = viridis(level(static_cast<double>(map.cost[static_cast<size_t>(j) * map.width + i])));
+    // The bar runs from `top` at its top to 0 at its bottom, with room for the caption below it; a
+    // map too low for one (a render a few pixels high) goes without.
+    const int bar_top = 8, bar_bottom = h - 34;
+    if (bar_bottom < bar_top + 2)
+        return image;
     const int x0 = map.width + gap;
     for (int j = bar_top; j <= bar_bottom; ++j)
         for (int i = x0; i < x0 + bar; ++i)
             image.at(i, j) = viridis(static_cast<float>(bar_bottom - j) / static_cast<float>(bar_bottom - bar_top));
     const color ink(0.9f);
-    constexpr int ticks = 4;
-    for (int t = 0; t <= ticks; ++t) {
-        const int j = bar_bottom - (bar_bottom - bar_top) * t / ticks;
+    // Ticks at quarters of a linear bar; at 0 and each power of ten of a logarithmic one.
+    std::vector<double> ticks;
+    if (log_scale) {
+        ticks.push_back(0.0);
+        for (double v = 10.0; v <= top; v *= 10.0)
+            ticks.push_back(v);
+    } else {
+        for (int t = 0; t <= 4; ++t)
+            ticks.push_back(top * t / 4);
+    }
+    for (const double v : ticks) {
+        const int j = bar_bottom - static_cast<int>(std::lround(static_cast<float>(bar_bottom - bar_top) * level(v)));
         for (int i = x0 + bar; i < x0 + bar + 5; ++i)
             image.at(i, j) = ink;
-        const std::string text = label(top * t / ticks) + (t == ticks ? "+" : "");
+        const std::string text = label(v) + (v == top ? "+" : "");
         draw_text(image, x0 + bar + 8, j - 6, text, ink);
     }
     // The caption under the bar, in two lines when one would run past the image's edge.

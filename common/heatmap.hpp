@@ -51,7 +51,14 @@ auto with_cost(CostMap& map, const Radiance& radiance)
 // and above), and beside them a colour bar labelled from 0 to `top` with `what` beneath: one image
 // of the map's height. top <= 0 takes the map's 99.5th percentile, so a few costly pixels do not
 // wash the rest out; either is rounded up to a round number (1, 2, 2.5 or 5 times a power of ten).
-Image heat_image(const CostMap& map, const std::string& what, double top = 0.0);
+// With HeatScale::log, colours and bar follow log10(1 + cost) up to a power of ten: maps that
+// differ a hundredfold (a uniform grid's and a BVH's) stay readable side by side on one scale.
+enum class HeatScale { linear, log };
+Image heat_image(const CostMap& map, const std::string& what, double top = 0.0, HeatScale scale = HeatScale::linear);
+
+// The map's 99.5th percentile: heat_image's top when none is given. Maps drawn to be compared
+// share one top, the largest of theirs.
+double heat_top(const CostMap& map);
 
 // a and b side by side (b to the right), on a dark background where their heights differ.
 Image side_by_side(const Image& a, const Image& b);
