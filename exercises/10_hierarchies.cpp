@@ -63,4 +63,18 @@ bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& ob
     return false;
 }
 
+bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interval range, const Objects& objects,
+                   ObjectHit& best)
+{
+    // EXERCISE 10.5: the child grid's descent.
+    // 1. const GridNode& node = h.grids[g]; GridWalk walk = start_walk(node.grid.shape, ray, part);
+    //    a missed walk keeps nothing: return false.
+    // 2. do { count the cell; a cell with a child asks hgrid_closest(h, child, ray,
+    //    Interval{walk.t_enter, walk.cell_exit()}, range, objects, best); any other cell asks
+    //    closest_in_cell(node.grid, walk, ray, range, objects, best). A cell that keeps a hit:
+    //    return true. } while (next_cell(walk)); return false.
+    // Hint: chapter 07's UniformGrid::closest (grid.hpp) is this walk for one level.
+    return false;
+}
+
 }  // namespace rt

@@ -294,6 +294,13 @@ foreach(scene IN LISTS kit_scenes)
   rt_same_render(10_hierarchies.bvh_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute SECOND --accel bvh
     ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
 endforeach()
+foreach(scene IN LISTS kit_scenes)
+  rt_same_render(10_hierarchies.hgrid_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute
+    SECOND --accel hgrid --leaf-size 2 --max-depth 3
+    ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
+endforeach()
+rt_same_render(10_hierarchies.hgrid_as_bvh_stadium 10_hierarchies FIRST --accel bvh SECOND --accel hgrid
+  ARGS --width 64 --classic GENERATE stadium --depth 2)
 rt_same_render(10_hierarchies.sah_as_median_stadium 10_hierarchies FIRST --split median SECOND --split sah
   ARGS --width 64 GENERATE stadium --depth 2)
 rt_same_render(10_hierarchies.bvh_as_hashed_stadium 10_hierarchies FIRST --accel hashed SECOND --accel bvh
@@ -305,8 +312,18 @@ rt_same_render(10_hierarchies.bvh_threads_tree 10_hierarchies FIRST --threads 1 
 rt_expect_exit(10_hierarchies.figure_stats 10_hierarchies 0
   "rays_primary=600\n.*accel=bvh\nobjects=21250\nnodes_visited=[1-9][0-9]*\n.*bvh_nodes=[1-9][0-9]*\n.*bvh_depth=[1-9][0-9]*\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_stats.png")
-rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, hashed, grid or brute, got 'kd'" --accel kd)
+rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, hgrid, hashed, grid or brute, got 'kd'" --accel kd)
 rt_expect_exit(10_hierarchies.unknown_split 10_hierarchies 2 "--split takes sah or median, got 'random'" --split random)
 rt_expect_exit(10_hierarchies.leaf_size_with_grid 10_hierarchies 2
-  "--leaf-size, --max-depth and --split shape the BVH; they apply to --accel bvh only" --accel grid --leaf-size 8)
+  "--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to --accel bvh or hgrid only"
+  --accel grid --leaf-size 8)
+rt_expect_exit(10_hierarchies.split_with_hgrid 10_hierarchies 2 "--split shapes the BVH; it applies to --accel bvh only"
+  --accel hgrid --split median)
+rt_expect_exit(10_hierarchies.hgrid_too_deep 10_hierarchies 2
+  "--max-depth for the hierarchy of grids must be between 0 and 8, got 9" --accel hgrid --max-depth 9)
+rt_expect_exit(10_hierarchies.hgrid_stats 10_hierarchies 0
+  "accel=hgrid\nobjects=[0-9]+\n.*cells_visited=[1-9][0-9]*\nhgrid_grids=[1-9][0-9]*\nhgrid_depth=[1-9]\n"
+  --accel hgrid --leaf-size 2 --width 48 --height 27 --stats --scene "${PROJECT_SOURCE_DIR}/common/scenes/patches.nff"
+  --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_hgrid_stats.png")
 rt_expect_exit(10_hierarchies.depth_too_deep 10_hierarchies 2 "--max-depth must be between 0 and 62, got 63" --max-depth 63)
+

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -56,6 +57,38 @@ inline Bounds grown(const Bounds& b, float margin)
     return {b.min - vec3(margin), b.max + vec3(margin)};
 }
 
+// Lists the objects `ids` (in increasing number) in the cells of grid.shape that their boxes,
+// grown by `margin`, overlap: a counting sort into grid.cell_start and grid.object_index.
+// Chapter 10's hierarchy of grids lists a cell's objects in its child grid the same way.
+inline void list_objects(Grid& grid, const Objects& objects, const std::vector<std::uint32_t>& ids, float margin)
+{
+    const GridShape& shape = grid.shape;
+    const int cell_count = shape.cell_count();
+    std::vector<CellRange> ranges(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        ranges[i] = cells_overlapping(shape, grown(objects.bounds(static_cast<int>(ids[i])), margin));
+    const auto for_each_cell = [&](const CellRange& r, auto&& visit) {
+        for (int i = r.first.x; i <= r.last.x; ++i)
+            for (int j = r.first.y; j <= r.last.y; ++j)
+                for (int l = r.first.z; l <= r.last.z; ++l) {
+                    const int p = shape.address({i, j, l});
+                    if (p >= 0 && p < cell_count)  // a student's 07.3 may step outside the grid
+                        visit(p);
+                }
+    };
+    // Pass 1: how many objects each cell lists, as offsets.
+    grid.cell_start.assign(static_cast<std::size_t>(cell_count) + 1, 0);
+    for (const CellRange& r : ranges)
+        for_each_cell(r, [&](int p) { ++grid.cell_start[p + 1]; });
+    for (int p = 0; p < cell_count; ++p)
+        grid.cell_start[p + 1] += grid.cell_start[p];
+    // Pass 2: the object numbers, in increasing order within each cell.
+    grid.object_index.resize(grid.cell_start[cell_count]);
+    std::vector<std::uint32_t> fill(grid.cell_start.begin(), grid.cell_start.end() - 1);
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        for_each_cell(ranges[i], [&](int p) { grid.object_index[fill[p]++] = ids[i]; });
+}
+
 // Builds the grid over every object, lambda cells per object. Throws InputError when the
 // resolution would pass max_grid_cells.
 inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = nullptr)
@@ -75,35 +108,10 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
                          " cells: choose a smaller lambda");
     const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
     grid.shape = grid_shape(count > 0 ? grown(scene, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
-    const GridShape& shape = grid.shape;
-    const int cell_count = shape.cell_count();
-
-    std::vector<CellRange> ranges(static_cast<std::size_t>(count));
-    for (int k = 0; k < count; ++k)
-        ranges[k] = cells_overlapping(shape, grown(objects.bounds(k), margin));
-    const auto for_each_cell = [&](const CellRange& r, auto&& visit) {
-        for (int i = r.first.x; i <= r.last.x; ++i)
-            for (int j = r.first.y; j <= r.last.y; ++j)
-                for (int l = r.first.z; l <= r.last.z; ++l)
-                    visit(shape.address({i, j, l}));
-    };
-    // Pass 1: how many objects each cell lists, as offsets.
-    grid.cell_start.assign(static_cast<std::size_t>(cell_count) + 1, 0);
-    for (int k = 0; k < count; ++k)
-        for_each_cell(ranges[k], [&](int p) {
-            if (p >= 0 && p < cell_count)  // a student's 07.3 may step outside the grid
-                ++grid.cell_start[p + 1];
-        });
-    for (int p = 0; p < cell_count; ++p)
-        grid.cell_start[p + 1] += grid.cell_start[p];
-    // Pass 2: the object numbers, in increasing order within each cell.
-    grid.object_index.resize(grid.cell_start[cell_count]);
-    std::vector<std::uint32_t> fill(grid.cell_start.begin(), grid.cell_start.end() - 1);
-    for (int k = 0; k < count; ++k)
-        for_each_cell(ranges[k], [&](int p) {
-            if (p >= 0 && p < cell_count)
-                grid.object_index[fill[p]++] = static_cast<std::uint32_t>(k);
-        });
+    std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
+    std::iota(all.begin(), all.end(), 0u);
+    list_objects(grid, objects, all, margin);
+    const int cell_count = grid.shape.cell_count();
 
     if (stats) {
         stats->resolution = n;

@@ -59,7 +59,8 @@ SceneProgram scene_program(const Options& o)
             [&o](const Objects& objects) { return ch07::make_accelerator(o.accel, objects, o.lambda); },
             [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
                 print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel), counts);
-            }};
+            },
+            {}};
 }
 
 // --- The trade ---

@@ -14,9 +14,11 @@
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +47,15 @@ struct SceneProgram {
     // The accelerator for a scene's objects (nullptr: brute force), and its --stats lines.
     std::function<std::unique_ptr<Accelerator>(const Objects&)> make;
     std::function<void(std::ostream&, const Accelerator*, int objects, const Counts&)> print;
+    // Structures the figure compares (chapter 10: the grid, the hierarchy of grids and the BVH):
+    // when given, the figure is the render beside one heat map for each, on one scale, in place of
+    // its own accelerator's map. The maps count what every structure does, the program's heat named
+    // "tests" (intersection tests). Each must render the same picture, byte for byte.
+    struct Compared {
+        std::string name;
+        std::function<std::unique_ptr<Accelerator>(const Objects&)> make;
+    };
+    std::vector<Compared> compare;
 };
 
 // "a, b or c": the heat maps' names, for help and messages.
@@ -91,6 +102,49 @@ inline Image render_lit(const SceneRender& file, const LitScene& scene, const Fe
     return cost ? render(file.settings, with_cost(*cost, radiance)) : render(file.settings, radiance);
 }
 
+// The figure's comparison: one render per compared structure, each with its heat map. Rendered
+// before the figure's own render, and its counts dropped, so --stats and the time are the figure's
+// accelerator's alone.
+struct Comparison {
+    std::vector<Image> images;
+    std::vector<CostMap> maps;
+};
+
+inline Comparison compare_structures(const SceneProgram& program, const SceneRender& file, const LitScene& lit,
+                                     const Objects& objects)
+{
+    const SceneProgram::Heat& heat = heat_named(program, "tests");
+    Comparison c;
+    for (const SceneProgram::Compared& structure : program.compare) {
+        LitScene scene = lit;
+        const std::unique_ptr<Accelerator> accel = structure.make(objects);
+        scene.accelerator = accel.get();
+        c.maps.emplace_back(file.settings.width, file.settings.height, heat.counter);
+        c.images.push_back(render_lit(file, scene, FeelerSettings{}, &c.maps.back()));
+    }
+    reset_counters();
+    return c;
+}
+
+// The comparison's heat maps side by side, on one logarithmic scale up to the largest of their
+// tops (the structures differ a hundredfold), each captioned with its structure's name. Each structure's render must equal the figure's `image`.
+inline Image compared_heat_maps(const SceneProgram& program, const Comparison& c, const Image& image)
+{
+    const SceneProgram::Heat& heat = heat_named(program, "tests");
+    double top = 0.0;
+    for (size_t k = 0; k < c.maps.size(); ++k) {
+        if (c.images[k].pixels != image.pixels)
+            throw std::logic_error("the " + program.compare[k].name + "'s render differs from the figure's: a bug of the kit");
+        top = std::max(top, heat_top(c.maps[k]));
+    }
+    Image row;
+    for (size_t k = 0; k < c.maps.size(); ++k) {
+        const Image map = heat_image(c.maps[k], program.compare[k].name + ": " + heat.caption, top, HeatScale::log);
+        row = k == 0 ? map : side_by_side(row, map);
+    }
+    return row;
+}
+
 inline int render_scene_program(const SceneProgram& program, const CommonOptions& common, const SceneOptions& o,
                                  const CommandLine& cli)
 {
@@ -126,6 +180,8 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
     const Objects objects = objects_of(scene, lit_tests);
     const std::unique_ptr<Accelerator> accel = program.make(objects);
     scene.accelerator = accel.get();
+    check_writable(common.out, "PNG");
+    const Comparison comparison = figure ? compare_structures(program, file, scene, objects) : Comparison{};
     return write_figure(common, [&] {
         CostMap cost(width, height, heat.counter);
         const Image image = render_lit(file, scene, FeelerSettings{}, &cost);
@@ -133,7 +189,11 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
         if (!o.heatmap.empty())
             write_png(o.heatmap, map);
         // The figure is the render with its heat map; a scene file is the render alone.
-        return figure ? side_by_side(image, map) : image;
+        if (!figure)
+            return image;
+        if (program.compare.empty())
+            return side_by_side(image, map);
+        return side_by_side(image, compared_heat_maps(program, comparison, image));
     }, stats(print_stats, accel.get(), objects.size()));
 }
 

@@ -62,7 +62,8 @@ SceneProgram scene_program(const Options& o)
             [&o](const Objects& objects) { return ch08::make_accelerator(o.accel, o.mailbox == "on", objects, o.lambda); },
             [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
                 print_structure_stats(out, o, objects, accel, counts);
-            }};
+            },
+            {}};
 }
 
 // --- The trade ---

@@ -72,7 +72,8 @@ SceneProgram scene_program(const Options& o)
             },
             [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
                 print_structure_stats(out, o, objects, accel, counts);
-            }};
+            },
+            {}};
 }
 
 // --- The trade ---

@@ -7,12 +7,14 @@
 // The slides: a scheme that adapts to the distribution of objects; the scene recursively
 // subdivided into nodes that enclose space and objects; empty space not subdivided, complex areas
 // subdivided; stop when a node holds few objects ("4-8 works well") or the tree reaches a depth
-// limit. This chapter's hierarchy is of the first kind, bounding volumes on groups of objects: a
-// bounding volume hierarchy (BVH) built by the surface area heuristic (bvh.hpp builds it with your
-// 10.1-10.3 and queries it with your 10.4).
+// limit. Two kinds: bounding volumes on hierarchical groups of objects, here a bounding volume
+// hierarchy (BVH) built by the surface area heuristic (bvh.hpp builds it with your 10.1-10.3 and
+// queries it with your 10.4); and space subdivision, here the slides' hierarchy of grids (hgrid.hpp
+// builds it; your 10.5 walks it).
 #pragma once
 
 #include "02_spheres_triangles/scene_query.hpp"
+#include "07_uniform_grid/07_uniform_grid.hpp"
 #include "common/bounds.hpp"
 
 #include <cstdint>
@@ -95,5 +97,35 @@ constexpr int bvh_stack_size = 64;
 // visited (count(Counter::nodes_visited)), that is each node whose box is tested. Returns
 // whether the ray hits anything in the range, with the nearest in `hit` (any_hit: any in `hit`).
 bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& objects, bool any_hit, ObjectHit& hit);
+
+// The hierarchy of grids (Jevans and Wyvill 1989, "Adaptive voxel subdivision for ray tracing"):
+// chapter 07's uniform grid, in which a cell listing more than a few objects holds a grid of its
+// own over the cell's box, of the cell's objects, and so on down to a depth limit. A cell is empty,
+// holds objects, or holds another grid (the slides' picture). Empty space stays coarse; a crowded
+// corner (the teapot in a stadium) gets fine cells where it needs them.
+struct GridNode {
+    Grid grid;  // chapter 07's grid; a cell with a grid of its own still lists its objects here
+    std::vector<std::int32_t> child;  // per cell: the number of its own grid in HGrid::grids, or -1
+};
+
+struct HGrid {
+    std::vector<GridNode> grids;  // grids[0] is the root; children by number, no pointers
+};
+
+// EXERCISE 10.5: the child grid's descent, the hierarchy's walk for the closest hit. Walk grid
+// number g over the part `part` of the ray (start_walk and next_cell, chapter 07's walk), counting
+// each cell visited (count(Counter::cells_visited)), and ask each cell in order:
+//   - a cell without a grid of its own (child[walk.p] < 0) as chapter 07 asks it (closest_in_cell,
+//     with the query's `range`);
+//   - a cell with one by walking that grid, this same function for grid child[walk.p], over the
+//     part of the ray inside the cell: Interval{walk.t_enter, walk.cell_exit()}. That part's end
+//     is the child walk's own t_range, so its last cell keeps hits up to where the ray leaves the
+//     parent's cell, and no farther: chapter 07's rule, at every level.
+// The first cell that keeps a hit ends the walk, at every level; a walk that misses keeps nothing.
+// A child grid's box is its cell's box grown by the margin the objects' boxes grow by (grid.hpp),
+// so the part of the ray inside the cell always lies within it. Returns whether best changed. The
+// root's walk is hgrid_closest(h, 0, ray, range, range, objects, best).
+bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interval range, const Objects& objects,
+                   ObjectHit& best);
 
 }  // namespace rt

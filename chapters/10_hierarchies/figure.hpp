@@ -1,9 +1,11 @@
 // Chapter 10's figure: the teapot in a stadium (chapter 09's scene) through the bounding volume
-// hierarchy, beside the heat map of the nodes each pixel visited.
+// hierarchy, beside three heat maps of the intersection tests each pixel cost, on one scale: under
+// chapter 07's uniform grid, the hierarchy of grids and the BVH.
 #pragma once
 
 #include "09_hashed_voxels/figure.hpp"
 #include "10_hierarchies/bvh.hpp"
+#include "10_hierarchies/hgrid.hpp"
 
 #include <memory>
 #include <string>
@@ -13,16 +15,21 @@ namespace rt::ch10 {
 inline NffScene figure_scene() { return ch09::figure_scene(); }
 
 // The accelerator by name (--accel): every structure of chapters 07-10.
+// The hierarchy of grids' settings come from `hgrid`, except its lambda, which is `lambda`.
 inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda,
-                                                     const BvhSettings& bvh)
+                                                     const BvhSettings& bvh, HGridSettings hgrid = {})
 {
     if (name == "bvh")
         return std::make_unique<BvhAccel>(objects, bvh);
+    if (name == "hgrid") {
+        hgrid.lambda = lambda;
+        return std::make_unique<HGridAccel>(objects, hgrid);
+    }
     if (name == "hashed")
         return ch09::make_accelerator(name, objects, lambda, 0);
     if (name == "grid" || name == "brute")
         return ch07::make_accelerator(name, objects, lambda);
-    throw InputError("--accel takes bvh, hashed, grid or brute, got '" + name + "'");
+    throw InputError("--accel takes bvh, hgrid, hashed, grid or brute, got '" + name + "'");
 }
 
 // The figure's scene through the BVH; with `cost`, what each pixel cost.

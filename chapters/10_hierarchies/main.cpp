@@ -1,7 +1,8 @@
-// Chapter 10's program: renders the figure (the teapot in a stadium through the BVH, beside its
-// heat map) or any NFF scene (--scene, --classic) through any structure of chapters 07-10
-// (--accel). --sweep measures the trade: leaf size and depth limit against build time, bytes,
-// nodes per ray and render time; SAH against a median split; and every structure side by side on
+// Chapter 10's program: renders the figure (the teapot in a stadium through the BVH, beside the
+// heat maps of the uniform grid, the hierarchy of grids and the BVH) or any NFF scene (--scene,
+// --classic) through any structure of chapters 07-10 (--accel). --sweep measures the trade: leaf
+// size and depth limit against build time, bytes, nodes per ray and render time; SAH against a
+// median split; the hierarchy of grids' leaf size and depth; and every structure side by side on
 // the kit's generated scenes.
 #include "07_uniform_grid/measure.hpp"
 #include "10_hierarchies/figure.hpp"
@@ -25,6 +26,8 @@ struct Options {
     std::string accel = "bvh";
     float lambda = ch07::default_lambda;
     BvhSettings bvh;
+    HGridSettings hgrid;
+    int leaf_size = 0, max_depth = -1;  // given: for the BVH or the hierarchy of grids, whichever --accel names
     std::string split = "sah";
     bool sweep = false;
     int repeat = 5;
@@ -44,21 +47,36 @@ void print_structure_stats(std::ostream& out, const Options& o, int objects, con
             << "bvh_depth=" << b->stats().depth << '\n'
             << "bytes=" << b->stats().bytes << '\n'
             << "build_seconds=" << b->stats().build_seconds << '\n';
+    else if (const auto* h = dynamic_cast<const HGridAccel*>(accel))
+        out << "hgrid_grids=" << h->stats().grids << '\n'
+            << "hgrid_depth=" << h->stats().depth << '\n'
+            << "hgrid_cells=" << h->stats().cells << '\n'
+            << "hgrid_references=" << h->stats().references << '\n'
+            << "bytes=" << h->stats().bytes << '\n'
+            << "build_seconds=" << h->stats().build_seconds << '\n';
     else if (accel)
         out << "bytes=" << accel->bytes() << '\n';
 }
 
 SceneProgram scene_program(const Options& o)
 {
+    const auto default_structure = [](const std::string& name) {
+        return [name](const Objects& objects) {
+            return ch10::make_accelerator(name, objects, ch07::default_lambda, BvhSettings{});
+        };
+    };
     return {"10_hierarchies",
             ch10::figure_scene,
             {{"nodes", Counter::nodes_visited, "nodes visited per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return ch10::make_accelerator(o.accel, objects, o.lambda, o.bvh); },
+            [&o](const Objects& objects) { return ch10::make_accelerator(o.accel, objects, o.lambda, o.bvh, o.hgrid); },
             [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
                 print_structure_stats(out, o, objects, accel, counts);
-            }};
+            },
+            {{"uniform grid", default_structure("grid")},
+             {"hierarchy of grids", default_structure("hgrid")},
+             {"BVH", default_structure("bvh")}}};
 }
 
 // --- The trade ---
@@ -90,7 +108,8 @@ Measured measure(const NffScene& nff, const StructureMaker& make, const RenderSe
 void sweep(const Options& o, const CommandLine& cli)
 {
     const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
-    std::cerr << "measuring the BVH's leaf size, depth and split, then every structure on five scenes...\n";
+    std::cerr << "measuring the BVH's leaf size, depth and split, the hierarchy of grids' leaf size and depth, then every "
+                 "structure on six scenes...\n";
     std::ofstream csv(o.csv);
     csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms\n";
     const NffScene stadium = ch10::figure_scene();
@@ -126,6 +145,33 @@ void sweep(const Options& o, const CommandLine& cli)
     for (const int leaf : {4})
         bvh_row(BvhSplit::median, leaf, 48);
 
+    std::cout << "\nthe hierarchy of grids on " << stadium.name << " (lambda " << ch07::default_lambda
+              << " at every level), same settings\n\n"
+              << "| leaf size | depth limit | grids | cells | MB | build ms | cells/ray | tests/ray | render ms |\n"
+                 "|---|---|---|---|---|---|---|---|---|\n";
+    for (const int depth : {0, 1, 2, 3})
+        for (const int leaf : {4, 8, 16}) {
+            if (depth == 0 && leaf != 8)
+                continue;  // depth 0 is chapter 07's grid, whatever the leaf size
+            HGridSettings h;
+            h.leaf_size = leaf;
+            h.max_depth = depth;
+            HGridStats built;
+            const Measured m = measure(stadium, [&](const Objects& objs) {
+                auto accel = std::make_unique<HGridAccel>(objs, h);
+                built = accel->stats();
+                return accel;
+            }, settings, o.repeat);
+            if (m.pixels != reference)
+                throw std::runtime_error("a hierarchy of grids' image differs from the BVH's: a bug of the kit");
+            std::cout << std::fixed << "| " << leaf << " | " << depth << " | " << built.grids << " | " << built.cells << " | "
+                      << std::setprecision(2) << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
+                      << m.build_ms << " | " << m.cells_per_ray << " | " << m.tests_per_ray << " | " << m.render_ms << " |\n";
+            csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",hgrid,leaf" << leaf << ":depth" << depth << ','
+                << m.build_ms << ',' << m.bytes << ',' << m.tests_per_ray << ",0," << m.cells_per_ray << ',' << m.render_ms
+                << '\n';
+        }
+
     std::cout << "\nevery structure side by side, " << settings.width << "x" << settings.height
               << ", 1 thread, medians of " << o.repeat << " runs; every image identical to the BVH's\n\n"
               << "| scene | objects | structure | MB | build ms | tests/ray | nodes or cells/ray | render ms |\n"
@@ -136,10 +182,11 @@ void sweep(const Options& o, const CommandLine& cli)
         ch07::generated_scene(write_mountain, 7, "mountain 7"),
         ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"),
         ch07::generated_scene(write_pyramid, 7, "pyramid 7"),
+        ch07::generated_scene(write_mountain, 10, "mountain 10"),
     };
     for (const NffScene& nff : scenes) {
         std::vector<std::uint8_t> same;
-        for (const std::string name : {"bvh", "grid", "hashed"}) {
+        for (const std::string name : {"bvh", "hgrid", "grid", "hashed"}) {
             const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
             Measured m;
             try {
@@ -175,24 +222,40 @@ int main(int argc, char** argv)
         add_common_options(cli, o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: bvh, hashed (chapter 09), grid (07) or brute");
-        cli.option("--lambda", o.lambda, "with grid or hashed: cells per object", 0.0f, 1e6f);
-        cli.option("--leaf-size", o.bvh.leaf_size, "with bvh: the most objects a leaf keeps before splitting", 1, 65535);
-        cli.option("--max-depth", o.bvh.max_depth, "with bvh: the deepest a leaf may lie (the root is 0)", 0,
-                   bvh_stack_size - 2);
+        cli.option("--accel", o.accel,
+                   "what answers the queries: bvh, hgrid (the hierarchy of grids), hashed (chapter 09), grid (07) or brute");
+        cli.option("--lambda", o.lambda, "with grid, hgrid or hashed: cells per object", 0.0f, 1e6f);
+        cli.option("--leaf-size", o.leaf_size,
+                   "with bvh: the most objects a leaf keeps (default 4); with hgrid: the most a cell lists before it "
+                   "gets a grid of its own (default 8)",
+                   1, 65535);
+        cli.option("--max-depth", o.max_depth,
+                   "with bvh: the deepest a leaf may lie (default 48); with hgrid: the deepest a grid may lie (default "
+                   "2); the root is 0",
+                   0, bvh_stack_size - 2);
         cli.option("--split", o.split, "with bvh: sah (the surface area heuristic) or median");
         cli.flag("--sweep", o.sweep, "measure leaf size, depth and split, and every structure side by side");
         cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
         cli.option("--csv", o.csv, "where --sweep writes its table");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        if (o.accel != "bvh" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes bvh, hashed, grid or brute, got '" + o.accel + "'");
+        if (o.accel != "bvh" && o.accel != "hgrid" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes bvh, hgrid, hashed, grid or brute, got '" + o.accel + "'");
         if (o.split != "sah" && o.split != "median")
             throw InputError("--split takes sah or median, got '" + o.split + "'");
         o.bvh.split = o.split == "sah" ? BvhSplit::sah : BvhSplit::median;
-        if (o.accel != "bvh" && (cli.given("--leaf-size") || cli.given("--max-depth") || cli.given("--split")))
-            throw InputError("--leaf-size, --max-depth and --split shape the BVH; they apply to --accel bvh only");
+        if (o.accel != "bvh" && cli.given("--split"))
+            throw InputError("--split shapes the BVH; it applies to --accel bvh only");
+        if (o.accel != "bvh" && o.accel != "hgrid" && (cli.given("--leaf-size") || cli.given("--max-depth")))
+            throw InputError("--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to "
+                             "--accel bvh or hgrid only");
+        if (o.accel == "hgrid" && o.max_depth > HGridAccel::max_hgrid_depth)
+            throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
+                             std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.max_depth));
+        if (cli.given("--leaf-size"))
+            o.bvh.leaf_size = o.hgrid.leaf_size = o.leaf_size;
+        if (cli.given("--max-depth"))
+            o.bvh.max_depth = o.hgrid.max_depth = o.max_depth;
         if (o.accel == "hashed" && !cli.given("--lambda"))
             o.lambda = ch09::default_hashed_lambda;
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });

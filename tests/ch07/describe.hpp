@@ -64,6 +64,19 @@ inline std::string show(const ObjectHit& h)
     return s.str();
 }
 
+// The objects of these arrays, which must outlive the view, tested as the lit chapters test them
+// (the precise sphere, the watertight triangle): the hand-built cases of chapters 07-10.
+inline Objects objects_over(const std::vector<Sphere>& spheres, const std::vector<Triangle>& triangles)
+{
+    Objects o;
+    o.spheres = spheres.data();
+    o.sphere_count = static_cast<int>(spheres.size());
+    o.triangles = triangles.data();
+    o.triangle_count = static_cast<int>(triangles.size());
+    o.tests = {SphereTest::precise, TriangleTest::watertight};
+    return o;
+}
+
 // A cell the segment crosses: its address and the t where the ray enters and leaves it.
 struct CrossedCell {
     int p;

@@ -20,16 +20,7 @@ const std::vector<Sphere> spheres = {
 const Triangle across{{1, -1, -1}, {1, 3, -1}, {1, -1, 3}};
 const std::vector<Triangle> triangles = {across, across, across};
 
-inline Objects objects()
-{
-    Objects o;
-    o.spheres = spheres.data();
-    o.sphere_count = static_cast<int>(spheres.size());
-    o.triangles = triangles.data();
-    o.triangle_count = static_cast<int>(triangles.size());
-    o.tests = {SphereTest::precise, TriangleTest::watertight};
-    return o;
-}
+inline Objects objects() { return objects_over(spheres, triangles); }
 
 // The grid with `lists[c]` in cell c.
 inline Grid grid_of(const std::vector<std::vector<std::uint32_t>>& lists)

@@ -1,0 +1,187 @@
+// The hierarchy of grids as an accelerator (given): chapter 07's grid at the root, a grid of its
+// own in every cell that lists more than leaf_size objects, down to a depth limit; walked by your
+// descent (10.5).
+//
+// The build (after Jevans and Wyvill 1989): the root is chapter 07's grid over every object. Each
+// of its cells that lists more than leaf_size objects, above the depth limit, gets a child grid:
+// over the cell's box (grown by the objects' margin, so the part of a ray inside the cell lies
+// inside the child), shaped by the same cube-root rule (07.1) for the cell's objects, listing them
+// as chapter 07 lists objects (list_objects). The child's crowded cells are subdivided in turn.
+#pragma once
+
+#include "07_uniform_grid/grid.hpp"
+#include "10_hierarchies/10_hierarchies.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct HGridSettings {
+    float lambda = 4.0f;  // cells per object at every level: chapter 07's default
+    int leaf_size = 8;    // a cell listing more objects than this gets a grid of its own: the slides' "4-8"
+    int max_depth = 2;    // the root is depth 0; no grid lies deeper than this
+};
+
+struct HGridStats {
+    int grids = 0, depth = 0;
+    long long cells = 0, references = 0;
+    std::size_t bytes = 0;
+    double build_seconds = 0.0;
+};
+
+class HGridAccel final : public Accelerator {
+public:
+    HGridAccel(const Objects& objects, const HGridSettings& settings = {}) : settings_(settings)
+    {
+        if (settings.max_depth < 0 || settings.max_depth > max_hgrid_depth)
+            throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
+                             std::to_string(max_hgrid_depth) + ", got " + std::to_string(settings.max_depth));
+        const Timer timer;
+        GridStats root;
+        h_.grids.push_back({build_grid(objects, settings.lambda, &root), {}});
+        h_.grids[0].child.assign(static_cast<std::size_t>(h_.grids[0].grid.shape.cell_count()), -1);
+        Bounds scene;  // the margin is the root's (build_grid's), at every level
+        for (int k = 0; k < objects.size(); ++k)
+            scene.grow(objects.bounds(k));
+        margin_ = objects.size() > 0 ? grid_margin_of(scene) : 0.0f;
+        cells_ = h_.grids[0].grid.shape.cell_count();
+        subdivide(objects, 0, 0);
+        for (const GridNode& node : h_.grids) {
+            stats_.cells += node.grid.shape.cell_count();
+            stats_.references += static_cast<long long>(node.grid.object_index.size());
+            stats_.bytes += sizeof(GridNode) +
+                            (node.grid.cell_start.size() + node.grid.object_index.size() + node.child.size()) * 4;
+        }
+        stats_.grids = static_cast<int>(h_.grids.size());
+        stats_.build_seconds = timer.seconds();
+    }
+
+    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        ObjectHit best;
+        if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
+            return false;
+        hit = best;
+        return true;
+    }
+
+    bool any(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        return any_in(0, ray, range, range, objects);
+    }
+
+    std::size_t bytes() const override { return stats_.bytes; }
+    const HGridStats& stats() const { return stats_; }
+    const HGrid& hgrid() const { return h_; }
+
+    // Why 8: each level multiplies the cells of a crowded region by lambda times its objects; past a
+    // few levels a cell is far smaller than any object in it and a deeper grid only repeats it.
+    static constexpr int max_hgrid_depth = 8;
+
+private:
+    // Gives each crowded cell of grid g (above the depth limit) a grid of its own, depth first.
+    void subdivide(const Objects& objects, int g, int depth)
+    {
+        if (depth >= settings_.max_depth)
+            return;
+        const GridShape shape = h_.grids[g].grid.shape;  // a copy: h_.grids grows below
+        for (int p = 0; p < shape.cell_count(); ++p) {
+            const std::uint32_t begin = h_.grids[g].grid.cell_start[p], end = h_.grids[g].grid.cell_start[p + 1];
+            const int count = static_cast<int>(end - begin);
+            if (count <= settings_.leaf_size)
+                continue;
+            const cell3 c{p / (shape.n.y * shape.n.z), (p / shape.n.z) % shape.n.y, p % shape.n.z};
+            const point3 lo = shape.box.min + vec3(c) * shape.cell_size;
+            const Bounds cell{lo, lo + shape.cell_size};
+            // An object whose box holds the whole cell (a floor through it) would be listed in every
+            // cell of a child grid: cutting the cell cannot separate it. Only the others count.
+            int separable = 0;
+            for (std::uint32_t i = begin; i < end; ++i)
+                separable += !covers(objects.bounds(static_cast<int>(h_.grids[g].grid.object_index[i])), cell);
+            if (separable <= settings_.leaf_size)
+                continue;
+            const cell3 n = grid_resolution(cell, count, settings_.lambda);
+            if (n == cell3(1))
+                continue;  // one cell again: nothing gained
+            const GridShape child_shape = grid_shape(grown(cell, margin_), n);
+            const std::vector<std::uint32_t> ids(h_.grids[g].grid.object_index.begin() + begin,
+                                                 h_.grids[g].grid.object_index.begin() + end);
+            if (!separates(child_shape, objects, ids))
+                continue;
+            cells_ += child_shape.cell_count();
+            if (cells_ > max_grid_cells)
+                throw InputError("the hierarchy of grids passes the limit of " + std::to_string(max_grid_cells) +
+                                 " cells (lambda " + std::to_string(settings_.lambda) + ", depth limit " +
+                                 std::to_string(settings_.max_depth) + "): choose a smaller lambda or depth limit");
+            GridNode node;
+            node.grid.shape = child_shape;
+            list_objects(node.grid, objects, ids, margin_);
+            node.child.assign(static_cast<std::size_t>(node.grid.shape.cell_count()), -1);
+            const int number = static_cast<int>(h_.grids.size());
+            h_.grids.push_back(std::move(node));
+            h_.grids[g].child[p] = number;
+            stats_.depth = std::max(stats_.depth, depth + 1);
+            subdivide(objects, number, depth + 1);
+        }
+    }
+
+    // Whether a child grid of these objects is worth building, by the cost its walk would have: a
+    // ray through a box of n_x x n_y x n_z cells crosses about (n_x + n_y + n_z) / 3 of them (a
+    // cube's mean chord is two thirds of its side, and a random direction crosses 3/2 cell faces a
+    // cell side along it), each listing references / cells objects on average. Built only when that
+    // is at most half the cell's objects, the tests a ray makes in the cell without it. Objects
+    // larger than the child's cells (long sticks across it) are listed in most of them: such a grid
+    // would be walked for nothing, and subdivided again, each level multiplying the references.
+    // Counted from the objects' cell ranges, before anything is listed.
+    bool separates(const GridShape& child, const Objects& objects, const std::vector<std::uint32_t>& ids) const
+    {
+        double references = 0.0;
+        for (const std::uint32_t k : ids) {
+            const CellRange r = cells_overlapping(child, grown(objects.bounds(static_cast<int>(k)), margin_));
+            references += static_cast<double>(r.last.x - r.first.x + 1) * (r.last.y - r.first.y + 1) *
+                          (r.last.z - r.first.z + 1);
+        }
+        const double crossed = (child.n.x + child.n.y + child.n.z) / 3.0;
+        return crossed * references / child.cell_count() < static_cast<double>(ids.size());
+    }
+
+    static bool covers(const Bounds& b, const Bounds& cell)
+    {
+        return b.min.x <= cell.min.x && b.min.y <= cell.min.y && b.min.z <= cell.min.z && b.max.x >= cell.max.x &&
+               b.max.y >= cell.max.y && b.max.z >= cell.max.z;
+    }
+
+    // The any-hit walk: the cells in order, a child grid walked over the part inside its cell; any
+    // object hit anywhere in the range ends it.
+    bool any_in(int g, const Ray& ray, Interval part, Interval range, const Objects& objects) const
+    {
+        const GridNode& node = h_.grids[g];
+        GridWalk walk = start_walk(node.grid.shape, ray, part);
+        if (walk.missed)
+            return false;
+        ObjectHit hit;
+        do {
+            count(Counter::cells_visited);
+            const int child = node.child[walk.p];
+            if (child >= 0) {
+                if (any_in(child, ray, {walk.t_enter, walk.cell_exit()}, range, objects))
+                    return true;
+                continue;
+            }
+            for (std::uint32_t i = node.grid.cell_start[walk.p]; i < node.grid.cell_start[walk.p + 1]; ++i)
+                if (objects.intersect(static_cast<int>(node.grid.object_index[i]), ray, range, hit))
+                    return true;
+        } while (next_cell(walk));
+        return false;
+    }
+
+    HGridSettings settings_;
+    HGrid h_;
+    HGridStats stats_;
+    float margin_ = 0.0f;
+    long long cells_ = 0;
+};
+
+}  // namespace rt
