@@ -5,7 +5,15 @@
 foreach(chapter IN LISTS RT_CHAPTERS)
   string(SUBSTRING "${chapter}" 0 2 nn)
   # Grading builds a student's chapters one at a time (tests/grade.cmake): not part of `all` there.
-  add_library(ex_${nn} OBJECT "${RT_EXERCISES_DIR}/${chapter}.cpp")
+  set(exercise_file "${RT_EXERCISES_DIR}/${chapter}.cpp")
+  if(NOT EXISTS "${exercise_file}")
+    # A submission without this chapter: a file that fails to compile with a message that says so,
+    # so the chapter scores 0 and the others are graded.
+    set(exercise_file "${CMAKE_BINARY_DIR}/missing_exercises/${chapter}.cpp")
+    file(WRITE "${exercise_file}" "#error \"the submission has no ${chapter}.cpp\"\n")
+    message(STATUS "${RT_EXERCISES_DIR} has no ${chapter}.cpp: chapter ${nn} scores 0")
+  endif()
+  add_library(ex_${nn} OBJECT "${exercise_file}")
   set_target_properties(ex_${nn} PROPERTIES EXCLUDE_FROM_ALL "${RT_GRADE}")
   target_link_libraries(ex_${nn} PUBLIC rt_common)
   # A stub's parameters are unused until the student writes the answer: no warning for that.
@@ -67,35 +75,30 @@ add_custom_target(figures DEPENDS ${figure_files})
 add_dependencies(figures nff_generate)
 
 # The speed/accuracy tables: `cmake --build <build> --target trade` runs every program's --sweep
-# into build/trade/NN_name.csv and, when gnuplot is installed (optional: nothing else needs it),
-# draws each as build/trade/NN_name.png.
+# into build/trade/NN_name.csv and, when gnuplot is installed (optional: nothing else needs it;
+# looked for when the target runs, so installing it later is enough), draws each as
+# build/trade/NN_name.png.
 set(RT_TRADE_DIR "${CMAKE_SOURCE_DIR}/build/trade" CACHE PATH "Where the trade target writes its tables and plots")
-find_program(GNUPLOT gnuplot)
 set(trade_files "")
 foreach(chapter IN LISTS RT_CHAPTERS)
   set(csv "${RT_TRADE_DIR}/${chapter}.csv")
-  set(plot_command "")
-  set(outputs "${csv}")
   # A chapter whose table is not a cost-error curve draws it with its own script.
   set(plot_script "${CMAKE_SOURCE_DIR}/common/trade_plot.gnuplot")
   if(EXISTS "${CMAKE_SOURCE_DIR}/chapters/${chapter}/trade_plot.gnuplot")
     set(plot_script "${CMAKE_SOURCE_DIR}/chapters/${chapter}/trade_plot.gnuplot")
   endif()
-  if(GNUPLOT)
-    set(png "${RT_TRADE_DIR}/${chapter}.png")
-    set(plot_command COMMAND "${GNUPLOT}" -e "csv='${csv}'" -e "png='${png}'" -e "title='${chapter}'"
-      "${plot_script}")
-    list(APPEND outputs "${png}")
-  endif()
-  add_custom_command(OUTPUT ${outputs}
+  set(png "${RT_TRADE_DIR}/${chapter}.png")
+  add_custom_command(OUTPUT "${csv}"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${RT_TRADE_DIR}"
     COMMAND ${chapter} --sweep --csv "${csv}"
-    ${plot_command}
+    COMMAND "${CMAKE_COMMAND}" -D "SCRIPT=${plot_script}"
+      "-D" "ARGS=-e|csv='${csv}'|-e|png='${png}'|-e|title='${chapter}'"
+      -P "${CMAKE_SOURCE_DIR}/common/plot_if_gnuplot.cmake"
     DEPENDS ${chapter} "${plot_script}"
     COMMENT "Measuring ${chapter}'s trade into ${csv}"
     USES_TERMINAL
     VERBATIM)
-  list(APPEND trade_files ${outputs})
+  list(APPEND trade_files "${csv}")
 endforeach()
 add_custom_target(trade DEPENDS ${trade_files})
 

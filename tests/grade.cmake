@@ -2,12 +2,14 @@
 # scores, then merges their results into a points table, results.json (Gradescope) and junit.xml.
 #
 # Called by the `grade` test of the grade preset, and by grade_batch.cmake once per submission:
-#   cmake -D BUILD_DIR=... -D CHAPTERS="01|02" -D REPORT=.../grade_report -P grade.cmake
+#   cmake -D BUILD_DIR=... -D CHAPTERS="01|02" -D REPORT=.../grade_report -D SOURCE_DIR=<the kit>
+#         -D EXERCISES_DIR=<the submission> -P grade.cmake
 # with the environment variables RT_GRADEBOOK=file.csv and RT_STUDENT=name set, it also appends
 # the student's row to that gradebook.
 # A chapter that does not compile scores 0 and shows the compiler's first lines; a case that loops
 # forever or crashes loses its own points only.
 string(REPLACE "|" ";" chapters "${CHAPTERS}")
+message(STATUS "==== grading the exercises in ${EXERCISES_DIR}")
 set(out "${BUILD_DIR}/grade-results")
 file(MAKE_DIRECTORY "${out}")
 set(results "")
@@ -23,7 +25,14 @@ foreach(nn IN LISTS chapters)
     list(SUBLIST errors 0 12 errors)
     string(JOIN "\\n" errors ${errors})
     string(REPLACE "\t" " " errors "${errors}")
-    file(WRITE "${result}" "${nn}.build\t0\t0\tchapter ${nn}'s exercise file does not compile: it scores 0\t${errors}\n")
+    # Paths as the student knows them: their own file by name, the kit's relative to it.
+    string(REPLACE "${EXERCISES_DIR}/" "" errors "${errors}")
+    string(REPLACE "${SOURCE_DIR}/" "" errors "${errors}")
+    # Every case of the chapter at 0, listed by a grader linked with the kit's own stubs, so the
+    # maximum stays whole; then the line that says why.
+    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --target cases_${nn} OUTPUT_QUIET ERROR_QUIET)
+    execute_process(COMMAND "${BUILD_DIR}/tests/cases_${nn}" --list-cases "${result}" OUTPUT_QUIET ERROR_QUIET)
+    file(APPEND "${result}" "${nn}.build\t0\t0\tchapter ${nn}'s exercise file does not compile (or is missing), so every case of the chapter scores 0. The compiler's first errors:\t${errors}\n")
     message(STATUS "chapter ${nn} does not compile:\n${log}")
   else()
     message(STATUS "---- chapter ${nn}: grading")
@@ -37,7 +46,8 @@ set(book "")
 if(DEFINED ENV{RT_GRADEBOOK})
   set(book --gradebook "$ENV{RT_GRADEBOOK}" --student "$ENV{RT_STUDENT}")
 endif()
-execute_process(COMMAND "${REPORT}" --json "${BUILD_DIR}/results.json" --junit "${BUILD_DIR}/junit.xml" ${book} ${results}
+execute_process(COMMAND "${REPORT}" --json "${BUILD_DIR}/results.json" --junit "${BUILD_DIR}/junit.xml"
+    ${book} ${results}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the grade report could not be written in full (${rc})")

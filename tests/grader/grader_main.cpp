@@ -6,6 +6,7 @@
 //                         does: the untouched stubs) or `less` (some case fails: a mutant). The exit
 //                         status then says whether the expectation held, not whether tests passed.
 //   --artifacts DIR       where picture tests write expected, actual and difference images
+//   --list-cases FILE     write every graded case at 0 points (a chapter that did not compile)
 //   --case-timeout S      with --results: run each graded case in its own process, stopped after S
 //                         seconds, so an endless loop or a crash in one case costs that case only
 #define CATCH_CONFIG_RUNNER
@@ -191,16 +192,25 @@ int main(int argc, char* argv[])
     using namespace rt::grader;
     Catch::Session session;
     Catch::StringMaker<float>::precision = 9;  // so a tolerance like 2e-6 does not print as 0.0
-    std::string expect;
+    std::string expect, list_path;
     int case_timeout = 0;
     using namespace Catch::clara;
     session.cli(session.cli() |
                 Opt(results_path, "file")["--results"]("write the graded cases, one a line, to this file") |
                 Opt(expect, "full|zero|less")["--expect-score"]("check the grader itself: exit 0 when the score is as expected") |
                 Opt(artifacts_dir, "dir")["--artifacts"]("where failing picture tests write their images") |
-                Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this long"));
+                Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this long") |
+                Opt(list_path, "file")["--list-cases"]("write every graded case at 0 points to this file, and run none"));
     if (const int rc = session.applyCommandLine(argc, argv); rc != 0)
         return rc;
+    if (!list_path.empty()) {
+        // The cases of a chapter whose exercise file did not compile: each at 0 of its points.
+        if (!write_results(list_path, planned_cases(session))) {
+            std::cerr << list_path << ": cannot write the cases\n";
+            return 2;
+        }
+        return 0;
+    }
     if (!expect.empty() && expect != "full" && expect != "zero" && expect != "less") {
         std::cerr << "--expect-score takes full, zero or less, got '" << expect << "'\n";
         return 2;

@@ -24,6 +24,10 @@ void print_case(std::ostream& out, const CaseResult& result);
 // Points per exercise and per chapter, and the failed cases by name.
 void print_points_table(std::ostream& out, const std::vector<CaseResult>& results);
 
+// A case's output as a student reads it: paths relative to the kit, and no more than the first 40
+// lines (or 4000 characters), then how many more there were.
+std::string tidy_output(std::string output);
+
 // One case a line, tab-separated, with tabs, newlines and backslashes escaped.
 bool write_results(const std::string& path, const std::vector<CaseResult>& results);
 bool append_result(const std::string& path, const CaseResult& result);

@@ -1,0 +1,23 @@
+# Writes Gradescope's autograder package: OUT/autograder.zip, the kit (solutions too, when it has
+# them, so a chapter is graded with the solutions of the chapters before it) with setup.sh and
+# run_autograder at the zip's root, as Gradescope wants them; it unpacks the zip into
+# /autograder/source.
+#   cmake -D SOURCE_DIR=<the kit> -D OUT=<folder> -P package.cmake
+set(stage "${OUT}/package")
+file(REMOVE_RECURSE "${stage}")
+file(MAKE_DIRECTORY "${stage}")
+foreach(entry CMakeLists.txt CMakePresets.json README.md chapters common exercises solutions tests)
+  if(EXISTS "${SOURCE_DIR}/${entry}")
+    file(COPY "${SOURCE_DIR}/${entry}" DESTINATION "${stage}")
+  endif()
+endforeach()
+file(COPY "${SOURCE_DIR}/tests/gradescope/setup.sh" "${SOURCE_DIR}/tests/gradescope/run_autograder"
+  DESTINATION "${stage}")
+file(GLOB entries RELATIVE "${stage}" "${stage}/*")
+file(REMOVE "${OUT}/autograder.zip")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E tar cf "${OUT}/autograder.zip" --format=zip ${entries}
+  WORKING_DIRECTORY "${stage}" RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "could not write ${OUT}/autograder.zip")
+endif()
+message(STATUS "wrote ${OUT}/autograder.zip: upload it as the assignment's autograder (Ubuntu image)")
