@@ -327,3 +327,13 @@ rt_expect_exit(10_hierarchies.hgrid_stats 10_hierarchies 0
   --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_hgrid_stats.png")
 rt_expect_exit(10_hierarchies.depth_too_deep 10_hierarchies 2 "--max-depth must be between 0 and 62, got 63" --max-depth 63)
 
+# The benchmark: on one tiny scene it checks every structure (and Embree, when this build found
+# it) against the reference and writes its tables; no timing is asserted. Cones go to Embree as
+# user geometry: the kit's cones scene checks that path.
+rt_expect_exit(benchmark.tiny benchmark 0 "wrote .*results.csv, any_hit.csv and results.md"
+  --tiny --out-dir "${CMAKE_CURRENT_BINARY_DIR}/programs/bench_tiny")
+rt_expect_exit(benchmark.tiny_cones benchmark 0 "\\*\\*cones.nff\\*\\* \\(8 objects\\)"
+  --tiny --scene "${PROJECT_SOURCE_DIR}/common/scenes/cones.nff" --out-dir "${CMAKE_CURRENT_BINARY_DIR}/programs/bench_cones")
+rt_expect_exit(benchmark.missing_scene benchmark 2 "missing.nff" --scene "${PROJECT_SOURCE_DIR}/missing.nff" --tiny
+  --out-dir "${CMAKE_CURRENT_BINARY_DIR}/programs/bench_missing")
+rt_expect_exit(benchmark.zero_repeat benchmark 2 "--repeat must be between 1 and 100" --repeat 0)
