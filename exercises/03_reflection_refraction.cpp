@@ -27,11 +27,12 @@ std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
     // 1. Which side: cos_i = -v.n. Entering (cos_i >= 0): eta = n1 / n2 = 1 / ior. Leaving
     //    (cos_i < 0): the ray is inside, so eta = ior, and the normal must face the ray: use -n
     //    and cos_i = -cos_i.
-    // 2. sin^2(theta_i) = 1 - cos_i^2, clamped to >= 0 (v and n are only unit to rounding, so
-    //    cos_i may come out a hair above 1), and sin^2(theta_t) = eta^2 sin^2(theta_i).
-    // 3. sin^2(theta_t) >= 1: total internal reflection, return std::nullopt.
-    // 4. cos_t = sqrt(1 - sin^2(theta_t)); t = eta v + (eta cos_i - cos_t) n (the n that faces the ray).
-    // Hint: std::sqrt, std::max; return the vector itself for a direction.
+    // 2. cos^2(theta_t) = 1 - eta^2 (1 - cos_i^2), written as (1 - eta)(1 + eta) + eta^2 cos_i^2 so
+    //    that a small cos_i^2 is not lost: near grazing, 1 - cos_i^2 rounds to 1 in float, and at
+    //    ior = 1 a ray a few 1e-4 from grazing would seem totally reflected.
+    // 3. cos^2(theta_t) <= 0: total internal reflection, return std::nullopt.
+    // 4. cos_t = sqrt(cos^2(theta_t)); t = eta v + (eta cos_i - cos_t) n (the n that faces the ray).
+    // Hint: std::sqrt; return the vector itself for a direction.
     return std::nullopt;
 }
 

@@ -37,11 +37,12 @@ std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
     // 1. Which side: cos_i = -v.n. Entering (cos_i >= 0): eta = n1 / n2 = 1 / ior. Leaving
     //    (cos_i < 0): the ray is inside, so eta = ior, and the normal must face the ray: use -n
     //    and cos_i = -cos_i.
-    // 2. sin^2(theta_i) = 1 - cos_i^2, clamped to >= 0 (v and n are only unit to rounding, so
-    //    cos_i may come out a hair above 1), and sin^2(theta_t) = eta^2 sin^2(theta_i).
-    // 3. sin^2(theta_t) >= 1: total internal reflection, return std::nullopt.
-    // 4. cos_t = sqrt(1 - sin^2(theta_t)); t = eta v + (eta cos_i - cos_t) n (the n that faces the ray).
-    // Hint: std::sqrt, std::max; return the vector itself for a direction.
+    // 2. cos^2(theta_t) = 1 - eta^2 (1 - cos_i^2), written as (1 - eta)(1 + eta) + eta^2 cos_i^2 so
+    //    that a small cos_i^2 is not lost: near grazing, 1 - cos_i^2 rounds to 1 in float, and at
+    //    ior = 1 a ray a few 1e-4 from grazing would seem totally reflected.
+    // 3. cos^2(theta_t) <= 0: total internal reflection, return std::nullopt.
+    // 4. cos_t = sqrt(cos^2(theta_t)); t = eta v + (eta cos_i - cos_t) n (the n that faces the ray).
+    // Hint: std::sqrt; return the vector itself for a direction.
     // SOLUTION BEGIN
     float cos_i = -glm::dot(v, n);
     float eta = 1.0f / ior;
@@ -51,11 +52,13 @@ std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
         eta = ior;
         facing = -n;
     }
-    const float sin2_i = std::max(0.0f, 1.0f - cos_i * cos_i);
-    const float sin2_t = eta * eta * sin2_i;
-    if (sin2_t >= 1.0f)
+    // cos^2(theta_t) = 1 - eta^2 sin^2(theta_i), with 1 - eta^2 factored (exact for eta near 1)
+    // and the cos_i^2 term kept whole: no cancellation near grazing or at eta = 1. v and n are
+    // unit only to rounding, so cos_i may be a hair above 1: min(cos_i^2, 1) keeps sin^2 >= 0.
+    const float cos2_t = (1.0f - eta) * (1.0f + eta) + eta * eta * std::min(cos_i * cos_i, 1.0f);
+    if (!(cos2_t > 0.0f))
         return std::nullopt;
-    const float cos_t = std::sqrt(1.0f - sin2_t);
+    const float cos_t = std::sqrt(cos2_t);
     // The part of v along the surface, scaled by eta (Snell), plus the part along -facing that
     // makes the result unit: eta v_s - cos_t facing, with v_s = v + cos_i facing.
     return eta * v + (eta * cos_i - cos_t) * facing;

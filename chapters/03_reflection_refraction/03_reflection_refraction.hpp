@@ -31,10 +31,12 @@ vec3 reflect(const vec3& v, const vec3& n);
 // n1 is the index on the ray's side and n2 the other: entering (v.n < 0), n1 = 1 and n2 = ior;
 // leaving (v.n > 0), n1 = ior and n2 = 1, and the normal is turned to face the ray. With
 // eta = n1 / n2, cos_i = -v.n (for the normal that faces the ray) and
-// sin^2(theta_t) = eta^2 (1 - cos_i^2), the transmitted direction is
-//   t = eta v + (eta cos_i - cos_t) n,   cos_t = sqrt(1 - sin^2(theta_t)).
-// Returns nothing when sin^2(theta_t) >= 1: total internal reflection, no ray gets through.
-// t is unit length when v is; never a NaN.
+// cos^2(theta_t) = 1 - sin^2(theta_t) = 1 - eta^2 (1 - cos_i^2), the transmitted direction is
+//   t = eta v + (eta cos_i - cos_t) n,   cos_t = sqrt(cos^2(theta_t)).
+// Returns nothing when cos^2(theta_t) <= 0: total internal reflection, no ray gets through.
+// Compute cos^2(theta_t) as (1 - eta)(1 + eta) + eta^2 cos_i^2: 1 - cos_i^2 rounds to 1 in float
+// for a ray a few 1e-4 from grazing, which at ior = 1 would report a total reflection that is not
+// there. t is unit length when v is; never a NaN.
 std::optional<vec3> refract(const vec3& v, const vec3& n, float ior);
 
 // EXERCISE 03.3: the exact reflectance of a clear dielectric interface (Fresnel's equations for

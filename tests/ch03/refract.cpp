@@ -139,6 +139,28 @@ STABILITY_TEST("refract: ior = 1 leaves every ray undeflected (to 1.35e-5), ente
     CHECK(worst <= 1.35e-5);
 }
 
+STABILITY_TEST("refract: at ior 1 and 1 + 1e-6 a ray a few 1e-4 from grazing still gets through, as Snell's law says", "03.2", 2)
+{
+    // cos_i down to 1e-4 (0.0057 degrees from grazing): 1 - cos_i^2 is 1 in float there, so the
+    // form 1 - eta^2 (1 - cos_i^2) says "total internal reflection" at ior = 1.
+    for (const Frame& f : {floor_frame, tilted_frame})
+        for (const float ior : {1.0f, 1.0f + 1e-6f})
+            for (const double cos_i : {1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 1e-2})
+                for (const bool from_inside : {false, true}) {
+                    const vec3 v = optics::incident(f.n, f.s, std::acos(cos_i), from_inside);
+                    const std::optional<vec3> t = refract(v, f.n, ior);
+                    const optics::Refracted want = optics::refract_reference(v, f.n, ior);
+                    INFO(query(v, f.n, ior) << " (cos_i " << cos_i << "): got " << optics::show(t) << ", expected "
+                         << optics::show(want));
+                    REQUIRE(t.has_value() == !want.total_internal_reflection);
+                    if (t) {
+                        CHECK(std::abs(glm::length(*t) - 1.0f) <= unit_tolerance);
+                        // Near grazing the direction is ill-conditioned in cos_i; at ior 1 it is v.
+                        CHECK(optics::distance(*t, want.t) <= (ior == 1.0f ? 1.35e-5 : 2e-3));
+                    }
+                }
+}
+
 STABILITY_TEST("refract: unit length kept and Snell's law met in float, against double, for random rays, sides and indices", "03.2", 2)
 {
     // Random unit v and n in every relation, indices from 1 to 2.5. The transmitted direction's
