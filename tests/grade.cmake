@@ -47,6 +47,7 @@ if(DEFINED ENV{RT_GRADEBOOK})
   set(book --gradebook "$ENV{RT_GRADEBOOK}" --student "$ENV{RT_STUDENT}")
 endif()
 execute_process(COMMAND "${REPORT}" --json "${BUILD_DIR}/results.json" --junit "${BUILD_DIR}/junit.xml"
+    --html "${BUILD_DIR}/report.html" --title "the exercises in ${EXERCISES_DIR}"
     ${book} ${results}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)

@@ -8,7 +8,8 @@
 # One build folder serves every student: switching RT_EXERCISES_DIR rebuilds only the exercises.
 # A student whose chapter is missing or does not compile scores 0 there, with every case of that
 # chapter listed; the batch goes on, printing each student's total as it goes.
-# Each student's results.json and junit.xml are kept under BUILD_DIR/students/NAME/.
+# Each student's results.json, junit.xml and report.html are kept under BUILD_DIR/students/NAME/,
+# and BUILD_DIR/class.html links them all.
 get_filename_component(source_dir "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT SUBMISSIONS OR NOT IS_DIRECTORY "${SUBMISSIONS}")
   message(FATAL_ERROR "grade_batch: SUBMISSIONS=${SUBMISSIONS} is not a folder (-D SUBMISSIONS=/path/to/class)")
@@ -20,6 +21,7 @@ if(NOT GRADEBOOK)
   set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
 endif()
 file(REMOVE "${GRADEBOOK}")
+set(class_rows "")
 file(GLOB entries LIST_DIRECTORIES true "${SUBMISSIONS}/*")
 list(SORT entries)
 foreach(entry IN LISTS entries)
@@ -51,6 +53,14 @@ foreach(entry IN LISTS entries)
   string(REGEX REPLACE "total +" "" total "${total}")
   message(STATUS "${student}: ${total}")
   file(MAKE_DIRECTORY "${BUILD_DIR}/students/${student}")
-  file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" DESTINATION "${BUILD_DIR}/students/${student}")
+  file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" "${BUILD_DIR}/report.html"
+    DESTINATION "${BUILD_DIR}/students/${student}")
+  string(APPEND class_rows "<tr><td><a href=\"students/${student}/report.html\">${student}</a></td><td>${total}</td></tr>\n")
 endforeach()
+# The class's page: every student's total, linking to their own report (images embedded in each).
+file(WRITE "${BUILD_DIR}/class.html" "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>The class</title>
+<style>body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:0.3em 0.6em}table{border-collapse:collapse}</style>
+</head><body><h1>The class</h1><p>Gradebook: gradebook.csv</p>
+<table><tr><th>student</th><th>points</th></tr>\n${class_rows}</table></body></html>\n")
+message(STATUS "class report: ${BUILD_DIR}/class.html")
 message(STATUS "gradebook: ${GRADEBOOK}")

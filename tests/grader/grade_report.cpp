@@ -1,7 +1,7 @@
 // Merges the per-chapter results of a grading run into one points table and the files a course
 // platform reads.
 //
-//   grade_report --json results.json --junit junit.xml RESULTS...
+//   grade_report --json results.json --junit junit.xml [--html report.html [--title T]] RESULTS...
 //
 // A chapter that did not compile comes as one line numbered NN.build, saying why, and its cases
 // listed at 0 of their points: each becomes a failure carrying that message, and the maximum is the
@@ -9,6 +9,7 @@
 //
 // A missing results file is named, and the report still covers the others. With --gradebook FILE --student NAME it also appends the
 // student's points per chapter to a CSV gradebook (batch grading).
+#include "tests/grader/html_report.hpp"
 #include "tests/grader/points.hpp"
 
 #include <algorithm>
@@ -20,7 +21,7 @@
 int main(int argc, char** argv)
 {
     using namespace rt::grader;
-    std::string json, junit, gradebook, student;
+    std::string json, junit, gradebook, student, html, title = "Grade";
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
@@ -32,6 +33,10 @@ int main(int argc, char** argv)
             gradebook = argv[++k];
         else if (arg == "--student" && k + 1 < argc)
             student = argv[++k];
+        else if (arg == "--html" && k + 1 < argc)
+            html = argv[++k];
+        else if (arg == "--title" && k + 1 < argc)
+            title = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
             std::cerr << "grade_report: unknown option '" << arg << "'\n";
             return 2;
@@ -83,6 +88,11 @@ int main(int argc, char** argv)
         if (!write_junit_xml(junit, results))
             return std::cerr << "grade_report: " << junit << ": cannot write\n", 2;
         std::cout << "wrote " << junit << '\n';
+    }
+    if (!html.empty()) {
+        if (!write_html_report(html, student.empty() ? title : student, results))
+            return std::cerr << "grade_report: " << html << ": cannot write\n", 2;
+        std::cout << "wrote " << html << '\n';
     }
     if (!gradebook.empty()) {
         if (!append_gradebook_row(gradebook, student, results))

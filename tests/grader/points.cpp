@@ -58,6 +58,8 @@ std::string escape_json(const std::string& s)
     return out.str();
 }
 
+}  // namespace
+
 std::string escape_xml(const std::string& s)
 {
     std::string out;
@@ -70,8 +72,6 @@ std::string escape_xml(const std::string& s)
     }
     return out;
 }
-
-}  // namespace
 
 void print_case(std::ostream& out, const CaseResult& r)
 {

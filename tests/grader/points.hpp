@@ -24,6 +24,9 @@ void print_case(std::ostream& out, const CaseResult& result);
 // Points per exercise and per chapter, and the failed cases by name.
 void print_points_table(std::ostream& out, const std::vector<CaseResult>& results);
 
+// Text safe inside XML or HTML: & < > " escaped.
+std::string escape_xml(const std::string& s);
+
 // A case's output as a student reads it: paths relative to the kit, and no more than the first 40
 // lines (or 4000 characters), then how many more there were.
 std::string tidy_output(std::string output);

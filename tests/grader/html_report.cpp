@@ -1,0 +1,111 @@
+#include "tests/grader/html_report.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace rt::grader {
+
+namespace {
+
+std::string base64(const std::string& bytes)
+{
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    size_t k = 0;
+    for (; k + 2 < bytes.size(); k += 3) {
+        const unsigned v = (static_cast<unsigned char>(bytes[k]) << 16) | (static_cast<unsigned char>(bytes[k + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[k + 2]);
+        out += {digits[v >> 18], digits[(v >> 12) & 63], digits[(v >> 6) & 63], digits[v & 63]};
+    }
+    if (k < bytes.size()) {
+        const unsigned v = (static_cast<unsigned char>(bytes[k]) << 16) |
+                           (k + 1 < bytes.size() ? static_cast<unsigned char>(bytes[k + 1]) << 8 : 0u);
+        out += {digits[v >> 18], digits[(v >> 12) & 63], k + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=', '='};
+    }
+    return out;
+}
+
+// A picture a case's output names ("expected:   build/.../x.expected.png"), as a data URI; empty
+// when the file is not there. Paths in outputs are relative to the kit.
+std::string image_uri(std::string path)
+{
+#ifdef RT_KIT_DIR
+    if (!std::filesystem::path(path).is_absolute())
+        path = std::string(RT_KIT_DIR) + "/" + path;
+#endif
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return "";
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return "data:image/png;base64," + base64(bytes.str());
+}
+
+const char* style = R"(body{font-family:sans-serif;margin:2em;max-width:70em;color:#222}
+table{border-collapse:collapse;margin:0.5em 0 1.5em}td,th{border:1px solid #ccc;padding:0.3em 0.6em;vertical-align:top;text-align:left}
+tr.fail td.points{background:#fdd}tr.ok td.points{background:#dfd}pre{white-space:pre-wrap;margin:0.4em 0;font-size:90%}
+figure{display:inline-block;margin:0.3em 0.6em 0 0}figure img{width:18em;image-rendering:pixelated;border:1px solid #999}
+figcaption{font-size:85%;text-align:center})";
+
+}  // namespace
+
+bool write_html_report(const std::string& path, const std::string& title, std::vector<CaseResult> results)
+{
+    // In exercise order (01.1 before 01.2), whatever order the cases ran in.
+    std::stable_sort(results.begin(), results.end(),
+                     [](const CaseResult& a, const CaseResult& b) { return a.number < b.number; });
+    std::map<std::string, std::pair<int, int>> chapters;  // points and maximum per chapter
+    int score = 0, max_score = 0;
+    for (const CaseResult& r : results) {
+        auto& c = chapters[r.number.substr(0, 2)];
+        c.first += r.score;
+        c.second += r.max_score;
+        score += r.score;
+        max_score += r.max_score;
+    }
+    std::ofstream out(path);
+    out << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << escape_xml(title)
+        << "</title>\n<style>" << style << "</style></head><body>\n<h1>" << escape_xml(title) << ": " << score << " / "
+        << max_score << " points</h1>\n<table><tr><th>chapter</th><th>points</th></tr>\n";
+    for (const auto& [chapter, points] : chapters)
+        out << "<tr><td><a href=\"#ch" << chapter << "\">chapter " << chapter << "</a></td><td>" << points.first << " / "
+            << points.second << "</td></tr>\n";
+    out << "</table>\n";
+    static const std::regex picture(R"((expected|actual|difference): +(\S+\.png))");
+    std::string chapter;
+    for (const CaseResult& r : results) {
+        if (r.number.substr(0, 2) != chapter) {
+            if (!chapter.empty())
+                out << "</table>\n";
+            chapter = r.number.substr(0, 2);
+            out << "<h2 id=\"ch" << chapter << "\">chapter " << chapter << ": " << chapters[chapter].first << " / "
+                << chapters[chapter].second << "</h2>\n<table><tr><th>exercise</th><th>case</th><th>points</th></tr>\n";
+        }
+        out << "<tr class=\"" << (r.passed ? "ok" : "fail") << "\"><td>" << escape_xml(r.number) << "</td><td>"
+            << escape_xml(r.name);
+        if (!r.passed && !r.output.empty()) {
+            out << "<pre>" << escape_xml(r.output) << "</pre>";
+            std::set<std::string> shown;  // an output may name a picture twice
+            for (auto m = std::sregex_iterator(r.output.begin(), r.output.end(), picture); m != std::sregex_iterator(); ++m) {
+                if (!shown.insert((*m)[2]).second)
+                    continue;
+                const std::string uri = image_uri((*m)[2]);
+                if (!uri.empty())
+                    out << "<figure><img alt=\"" << (*m)[1] << "\" src=\"" << uri << "\"><figcaption>" << (*m)[1]
+                        << "</figcaption></figure>";
+            }
+        }
+        out << "</td><td class=\"points\">" << r.score << " / " << r.max_score << "</td></tr>\n";
+    }
+    if (!chapter.empty())
+        out << "</table>\n";
+    out << "</body></html>\n";
+    return static_cast<bool>(out);
+}
+
+}  // namespace rt::grader
