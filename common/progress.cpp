@@ -1,20 +1,40 @@
 #include "common/progress.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace rt {
 
-Progress::Progress(std::string what, long total)
-    : what_(std::move(what)), total_(total), enabled_(total > 0 && isatty(fileno(stderr)) != 0),
-      last_print_(std::chrono::steady_clock::now())
+std::string readable_duration(double seconds)
 {
+    const long s = std::lround(std::max(0.0, seconds));
+    char text[32];
+    if (s < 60)
+        std::snprintf(text, sizeof text, "%ld s", s);
+    else if (s < 3600)
+        std::snprintf(text, sizeof text, "%ld min %02ld s", s / 60, s % 60);
+    else
+        std::snprintf(text, sizeof text, "%ld h %02ld min", s / 3600, (s / 60) % 60);
+    return text;
+}
+
+Progress::Progress(std::string what, long total)
+    : what_(std::move(what)), total_(total), enabled_(total > 0), terminal_(isatty(fileno(stderr)) != 0),
+      log_period_(progress_log_seconds), start_(std::chrono::steady_clock::now()), last_print_(start_)
+{
+    if (const char* period = std::getenv("RT_PROGRESS_SECONDS"))
+        log_period_ = std::atof(period);
 }
 
 Progress::~Progress()
 {
-    if (enabled_)
-        std::fprintf(stderr, "\r%s: done%30s\n", what_.c_str(), "");
+    if (enabled_ && (terminal_ || logged_))
+        std::fprintf(stderr, "%s%s: done in %s%20s\n", terminal_ ? "\r" : "", what_.c_str(),
+                     readable_duration(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()).c_str(),
+                     "");
 }
 
 void Progress::tick()
@@ -22,15 +42,21 @@ void Progress::tick()
     const long done = ++done_;
     if (!enabled_)
         return;
-    // At most ten updates a second, and never wait for the lock: a busy thread skips the print.
+    // Never wait for the lock: a busy thread skips the print.
     std::unique_lock<std::mutex> lock(print_mutex_, std::try_to_lock);
     if (!lock.owns_lock())
         return;
     const auto now = std::chrono::steady_clock::now();
-    if (now - last_print_ < std::chrono::milliseconds(100) && done != total_)
+    const double since_print = std::chrono::duration<double>(now - last_print_).count();
+    if (terminal_ ? since_print < 0.1 && done != total_ : since_print < log_period_)
         return;
     last_print_ = now;
-    std::fprintf(stderr, "\r%s: %3ld%%", what_.c_str(), total_ > 0 ? 100 * done / total_ : 100);
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double left = done > 0 ? elapsed * static_cast<double>(total_ - done) / static_cast<double>(done) : 0.0;
+    std::fprintf(stderr, "%s%s: %3ld%% (%s, about %s left)%s", terminal_ ? "\r" : "", what_.c_str(),
+                 100 * done / total_, readable_duration(elapsed).c_str(), readable_duration(left).c_str(),
+                 terminal_ ? "   " : "\n");
+    logged_ = logged_ || !terminal_;
     std::fflush(stderr);
 }
 

@@ -337,3 +337,12 @@ rt_expect_exit(benchmark.tiny_cones benchmark 0 "\\*\\*cones.nff\\*\\* \\(8 obje
 rt_expect_exit(benchmark.missing_scene benchmark 2 "missing.nff" --scene "${PROJECT_SOURCE_DIR}/missing.nff" --tiny
   --out-dir "${CMAKE_CURRENT_BINARY_DIR}/programs/bench_missing")
 rt_expect_exit(benchmark.zero_repeat benchmark 2 "--repeat must be between 1 and 100" --repeat 0)
+
+# Long work says how far it is, in a log too: a line per period with the time so far and an
+# estimate of what is left, then how long it took (the period forced to 0 for the test).
+add_test(NAME programs.progress_in_a_log
+  COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:04_shadow_feelers>" -D PROGRESS_SECONDS=0 -D STATUS=0
+    -D "MATCH=rendering: +[0-9]+% \\([0-9]+ s, about [0-9]+ s left\\)\n.*rendering: done in [0-9]+ s"
+    -D "ARGS=--width|16|--height|8|--threads|1|--out|${CMAKE_CURRENT_BINARY_DIR}/programs/progress.png"
+    -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
+set_tests_properties(programs.progress_in_a_log PROPERTIES LABELS "programs")

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iostream>
 #include <memory>
 #include <ostream>
 #include <stdexcept>
@@ -207,6 +208,8 @@ inline int finish_scene_program(const SceneProgram& program, const CommonOptions
     check_scene_program_options(program, o, common);
     if (sweep) {
         check_writable(csv, "CSV");
+        // Each row as it is measured, in a log too: a sweep takes minutes.
+        std::cout << std::unitbuf;
         run_sweep();
         return 0;
     }
