@@ -45,14 +45,24 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
     throw InputError("--accel takes brute or grid, got '" + name + "'");
 }
 
+// A generated figure's scene through the accelerator `make` builds from its objects, with chapter
+// 04's shading and feelers; with `cost`, what each pixel cost. Chapters 07-10 render their figures
+// (and the picture tests theirs) through it.
+template <class Make>
+Image render_figure_through(const NffScene& nff, const RenderSettings& settings, const Make& make, CostMap* cost)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    const std::unique_ptr<Accelerator> accel = make(objects_of(scene, lit_tests));
+    scene.accelerator = accel.get();
+    return render_lit(file, scene, FeelerSettings{}, cost);
+}
+
 // The figure's scene through the grid, lambda cells per object; with `cost`, what each pixel cost.
 inline Image render_through_grid(const RenderSettings& settings, float lambda = default_lambda, CostMap* cost = nullptr)
 {
-    const SceneRender file = scene_render(figure_scene(), settings);
-    LitScene scene = lit_scene(file.scene);
-    const UniformGrid grid(objects_of(scene, lit_tests), lambda);
-    scene.accelerator = &grid;
-    return render_lit(file, scene, FeelerSettings{}, cost);
+    return render_figure_through(figure_scene(), settings,
+                                 [&](const Objects& o) { return std::make_unique<UniformGrid>(o, lambda); }, cost);
 }
 
 }  // namespace rt::ch07

@@ -29,11 +29,8 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, bo
 inline Image render_through_mailboxes(const RenderSettings& settings, float lambda = ch07::default_lambda,
                                       CostMap* cost = nullptr)
 {
-    const SceneRender file = scene_render(figure_scene(), settings);
-    LitScene scene = lit_scene(file.scene);
-    const MailboxGrid grid(objects_of(scene, lit_tests), lambda);
-    scene.accelerator = &grid;
-    return render_lit(file, scene, FeelerSettings{}, cost);
+    return ch07::render_figure_through(figure_scene(), settings,
+                                       [&](const Objects& o) { return std::make_unique<MailboxGrid>(o, lambda); }, cost);
 }
 
 }  // namespace rt::ch08

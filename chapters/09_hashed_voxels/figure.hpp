@@ -38,11 +38,8 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
 inline Image render_through_hashed(const RenderSettings& settings, float lambda = default_hashed_lambda,
                                    CostMap* cost = nullptr)
 {
-    const SceneRender file = scene_render(figure_scene(), settings);
-    LitScene scene = lit_scene(file.scene);
-    const HashedGrid grid(objects_of(scene, lit_tests), lambda);
-    scene.accelerator = &grid;
-    return render_lit(file, scene, FeelerSettings{}, cost);
+    return ch07::render_figure_through(figure_scene(), settings,
+                                       [&](const Objects& o) { return std::make_unique<HashedGrid>(o, lambda); }, cost);
 }
 
 }  // namespace rt::ch09

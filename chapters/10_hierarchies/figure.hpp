@@ -35,11 +35,8 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
 // The figure's scene through the BVH; with `cost`, what each pixel cost.
 inline Image render_through_bvh(const RenderSettings& settings, const BvhSettings& bvh = {}, CostMap* cost = nullptr)
 {
-    const SceneRender file = scene_render(figure_scene(), settings);
-    LitScene scene = lit_scene(file.scene);
-    const BvhAccel tree(objects_of(scene, lit_tests), bvh);
-    scene.accelerator = &tree;
-    return render_lit(file, scene, FeelerSettings{}, cost);
+    return ch07::render_figure_through(figure_scene(), settings,
+                                       [&](const Objects& o) { return std::make_unique<BvhAccel>(o, bvh); }, cost);
 }
 
 }  // namespace rt::ch10

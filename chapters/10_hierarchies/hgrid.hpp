@@ -39,8 +39,7 @@ public:
             throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
                              std::to_string(max_hgrid_depth) + ", got " + std::to_string(settings.max_depth));
         const Timer timer;
-        GridStats root;
-        h_.grids.push_back({build_grid(objects, settings.lambda, &root), {}});
+        h_.grids.push_back({build_grid(objects, settings.lambda), {}});
         h_.grids[0].child.assign(static_cast<std::size_t>(h_.grids[0].grid.shape.cell_count()), -1);
         Bounds scene;  // the margin is the root's (build_grid's), at every level
         for (int k = 0; k < objects.size(); ++k)
