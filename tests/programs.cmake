@@ -346,3 +346,4 @@ add_test(NAME programs.progress_in_a_log
     -D "ARGS=--width|16|--height|8|--threads|1|--out|${CMAKE_CURRENT_BINARY_DIR}/programs/progress.png"
     -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
 set_tests_properties(programs.progress_in_a_log PROPERTIES LABELS "programs")
+rt_expect_exit(benchmark.unknown_structure benchmark 2 "--structures: unknown structure 'kd'" --structures bvh,kd --tiny)
