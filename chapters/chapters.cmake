@@ -28,11 +28,12 @@ endforeach()
 # track `figures`: the solutions of chapters 1..nn (the student's files in a handout).
 # track `graded`: the student's chapter nn, and the solutions of the chapters before it when they
 # exist, so a mistake in chapter 2 costs points in chapter 2 only.
+# track `stubs`: the exercises of chapters 1..nn, as a handout without solutions builds them.
 function(rt_chapter_libraries out nn track)
   set(libs "")
   foreach(chapter IN LISTS RT_CHAPTERS)
     string(SUBSTRING "${chapter}" 0 2 k)
-    if(RT_HAVE_SOLUTIONS AND (track STREQUAL "figures" OR k LESS nn))
+    if(RT_HAVE_SOLUTIONS AND (track STREQUAL "figures" OR (track STREQUAL "graded" AND k LESS nn)))
       list(APPEND libs sol_${k})
     else()
       list(APPEND libs ex_${k})

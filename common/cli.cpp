@@ -3,6 +3,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/stats.hpp"
+#include "common/stub.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -12,6 +13,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <vector>
 
 namespace rt {
 
@@ -156,6 +158,23 @@ RenderSettings render_settings(const CommonOptions& o)
     return s;
 }
 
+namespace {
+
+// A picture drawn by unfinished exercises is a handout's first picture, not a bug: say so, so a
+// flat or empty figure is not mistaken for the chapter's answer.
+void say_which_stubs_ran(const std::string& out)
+{
+    const std::vector<std::string> stubs = stubs_that_ran();
+    if (stubs.empty())
+        return;
+    std::cerr << out << " was drawn with " << stubs.size() << (stubs.size() == 1 ? " exercise still a stub:" : " exercises still stubs:");
+    for (const std::string& s : stubs)
+        std::cerr << ' ' << s;
+    std::cerr << " (grep -n \"EXERCISE " << stubs.front() << "\" exercises/*.cpp to start)\n";
+}
+
+}  // namespace
+
 int write_figure(const CommonOptions& options, const std::function<Image()>& render, StatsPrinter print)
 {
     check_writable(options.out, "PNG");
@@ -167,6 +186,7 @@ int write_figure(const CommonOptions& options, const std::function<Image()>& ren
     write_png(options.out, image);
     if (options.stats)
         print(std::cout, total_counts(), seconds);
+    say_which_stubs_ran(options.out);
     // A NaN or an infinity is the kit's own bug, never the input's: the PNG shows such pixels in
     // magenta (to_srgb8), and the exit status says so, so no test passes over one.
     if (const int bad = count_non_finite(image); bad > 0) {

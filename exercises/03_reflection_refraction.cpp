@@ -6,6 +6,7 @@
 // always runs (until 03.5 is written it shows only the sky).
 // Check your work with:  cmake --build --preset grade --target check_03
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@ vec3 reflect(const vec3& v, const vec3& n)
     // normal and v_s = v - v_n along the surface; the mirror keeps v_s and reverses v_n:
     // r = v_s - v_n = v - 2 (v.n) n.
     // Hint: glm::dot(v, n) is v.n.
-    return v;
+    return stub("03.1", v);
 }
 
 std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
@@ -33,7 +34,7 @@ std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
     // 3. cos^2(theta_t) <= 0: total internal reflection, return std::nullopt.
     // 4. cos_t = sqrt(cos^2(theta_t)); t = eta v + (eta cos_i - cos_t) n (the n that faces the ray).
     // Hint: std::sqrt; return the vector itself for a direction.
-    return std::nullopt;
+    return stub("03.2", std::nullopt);
 }
 
 float fresnel_dielectric(float cos_i, float ior)
@@ -48,7 +49,7 @@ float fresnel_dielectric(float cos_i, float ior)
     //    and R = (r_perp^2 + r_par^2) / 2.
     // Hint: check total internal reflection before dividing: at grazing incidence with ior = 1
     // both denominators would be 0.
-    return 0.0f;
+    return stub("03.3", 0.0f);
 }
 
 float fresnel_schlick(float cos_i, float ior)
@@ -60,7 +61,7 @@ float fresnel_schlick(float cos_i, float ior)
     // from Snell's law, and exactly 1 under total internal reflection. With cos_i there the curve
     // stays near R0 right up to the critical angle, where the true R jumps to 1.
     // Hint: n1 and n2 as in 03.3 (ior may be below 1: the inside is then the less dense side).
-    return 0.0f;
+    return stub("03.4", 0.0f);
 }
 
 color trace(const WhittedScene& scene, const Ray& ray, const TraceSettings& settings, int depth, float weight)
@@ -77,7 +78,7 @@ color trace(const WhittedScene& scene, const Ray& ray, const TraceSettings& sett
     //    hit->p: when k > 0 and weight k >= settings.min_weight, count it, and add
     //    k trace(scene, that ray, settings, depth + 1, weight k).
     // Hint: Ray{hit->p, direction} is a secondary ray; count(Counter::reflected_rays) counts one.
-    return background(scene, ray.dir);
+    return stub("03.5", background(scene, ray.dir));
 }
 
 }  // namespace rt

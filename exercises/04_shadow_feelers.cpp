@@ -8,6 +8,7 @@
 // This chapter uses chapters 01 and 02 only: the intersection tests of chapter 02 (through
 // hit_sphere and hit_triangle) and its normals.
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "04_shadow_feelers/closest_hit.hpp"
 #include "04_shadow_feelers/feeler.hpp"
 
@@ -28,7 +29,7 @@ color local_shading(const PhongMaterial& m, const vec3& n, const vec3& to_eye, c
     //    the light straight to the eye). When l + v is 0 there is no halfway direction: no highlight.
     // 4. Both times `light`.
     // Hint: std::pow(x, m.shininess); m.diffuse and m.specular are colours (multiply per channel).
-    return color(0.0f);
+    return stub("04.1", color(0.0f));
 }
 
 bool occluded(const LitScene& scene, const point3& origin, const point3& light, float t_min)
@@ -43,7 +44,7 @@ bool occluded(const LitScene& scene, const point3& origin, const point3& light, 
     //    lit_tests.triangle) and hit_cone_counted(ray, cone, range): return true at the first hit,
     //    without looking further. false when nothing is in the way.
     // Hint: unlike closest_hit (closest_hit.hpp), never shrink the range: any hit will do.
-    return false;
+    return stub("04.2", false);
 }
 
 point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
@@ -57,7 +58,7 @@ point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
     //      pattern grows with its magnitude), and read the bits back as a float.
     // Hint: std::memcpy(&bits, &value, 4) reads a float's bits into an integer (and back) without
     // breaking C++'s aliasing rules.
-    return p;
+    return stub("04.3", p);
 }
 
 color shade(const LitScene& scene, const Ray& ray, const Hit& hit, const FeelerSettings& feelers)
@@ -70,7 +71,7 @@ color shade(const LitScene& scene, const Ray& ray, const Hit& hit, const FeelerS
     //    length, l = to_light / sqrt(d2). Skip the light when d2 = 0 or n.l <= 0 (it lies behind the
     //    surface: no feeler needed), or when light_blocked(scene, hit, light.position, feelers).
     //    Else add local_shading(m, n, v, l, light.intensity / d2).
-    return color(0.0f);
+    return stub("04.4", color(0.0f));
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 // This chapter builds on chapter 04: direct_light calls its local_shading (04.1) and its
 // shadow feeler (light_blocked, which calls your 04.2 and 04.3).
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "04_shadow_feelers/feeler.hpp"
 #include "05_soft_shadows/05_soft_shadows.hpp"
 #include "05_soft_shadows/light_samples.hpp"
@@ -21,7 +22,7 @@ point3 point_on_rectangle(const AreaLight& light, sample2 u)
 {
     // EXERCISE 05.1: u in [0, 1)^2 to the rectangle: stretch [0, 1) to [-1, 1) along each axis.
     // Hint: light.centre + (2 u.x - 1) light.axis_u + (2 u.y - 1) light.axis_v.
-    return light.centre;
+    return stub("05.1", light.centre);
 }
 
 point3 point_on_disc(const AreaLight& light, sample2 u)
@@ -34,7 +35,7 @@ point3 point_on_disc(const AreaLight& light, sample2 u)
     //    (r may be negative: that is the half-turn that puts the square's left and bottom halves
     //    on the disc's left and bottom.)
     // 3. The disc point (x, y) = (r cos phi, r sin phi); return centre + x axis_u + y axis_v.
-    return light.centre;
+    return stub("05.2", light.centre);
 }
 
 sample2 stratified_sample(int k, int n, Rng& rng)
@@ -45,7 +46,7 @@ sample2 stratified_sample(int k, int n, Rng& rng)
     //    in that order (draw x's number first).
     // 3. Clamp each to at most one_minus_epsilon: in float, (n - 1 + 0.99999994) / n can round to 1.
     // Hint: static_cast<float>(a) before adding; std::min(x, one_minus_epsilon).
-    return {0.5f, 0.5f};
+    return stub("05.3", sample2{0.5f, 0.5f});
 }
 
 color direct_light(const AreaLitScene& scene, const Ray& ray, const Hit& hit, const AreaLight& light,
@@ -61,7 +62,7 @@ color direct_light(const AreaLitScene& scene, const Ray& ray, const Hit& hit, co
     //    light_blocked(scene.lit, hit, y, FeelerSettings{}) (the feeler costs a ray: ask last).
     //    Else add local_shading(m, n, v, l, light.radiance * (cos_light * A / (N d2))).
     // Hint: the point light of chapter 04 is the case N = 1 with intensity L_e A and cos_light = 1.
-    return color(0.0f);
+    return stub("05.4", color(0.0f));
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 // This chapter builds on chapter 01 (primary_ray, the pinhole ray, which 06.3 calls); its
 // program and figure also use chapter 02's spheres and triangles and chapter 04's shading.
 #include "06_depth_of_field/06_depth_of_field.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "01_ray_casting/01_ray_casting.hpp"
 
 #include <cmath>
@@ -27,7 +28,7 @@ point2 concentric_disc(point2 square)
     //    r keeps its sign, which puts the point in the opposite wedge when it is negative.
     // 4. Return (r cos phi, r sin phi).
     // Hint: quarter_pi is pi / 4; std::abs, std::cos and std::sin work on floats.
-    return point2(0.0f);
+    return stub("06.1", point2(0.0f));
 }
 
 point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
@@ -37,7 +38,7 @@ point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
     // ray advances dir.(-w) toward it (the cosine of the ray's angle to the view direction), so the
     // ray reaches it at t = F / (dir.(-w)), not at t = F.
     // Hint: pinhole.at(t) is the point.
-    return pinhole.origin;
+    return stub("06.2", pinhole.origin);
 }
 
 Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng& rng)
@@ -50,7 +51,7 @@ Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng
     // 3. The lens point: cam.eye + R (d.x cam.u + d.y cam.v), R = lens.aperture_radius: the lens
     //    lies in the camera's own u, v plane, whatever way the camera looks.
     // 4. The ray from the lens point toward focal_point(cam, lens, pinhole), direction made unit.
-    return Ray{cam.eye, -cam.w};
+    return stub("06.3", Ray{cam.eye, -cam.w});
 }
 
 }  // namespace rt

@@ -9,6 +9,7 @@
 // This chapter uses chapter 02's objects (Objects::intersect, closer_than) and the slab test
 // (common/bounds.hpp); the grid's build and its query loops are given (grid.hpp).
 #include "07_uniform_grid/07_uniform_grid.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,7 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_
     //    clamped to 1 .. max_per_axis.
     // Hint: std::pow(x, 1.0f / dims); compute in float, the box is float; clamp a float before
     // converting it to int.
-    return {1, 1, 1};
+    return stub("07.1", cell3{1, 1, 1});
 }
 
 cell3 cell_of(const GridShape& grid, const point3& p)
@@ -37,7 +38,7 @@ cell3 cell_of(const GridShape& grid, const point3& p)
     // 0 .. grid.n[a] - 1.
     // Hint: clamp the float before converting it to int: a point far outside gives a value no int
     // can hold.
-    return {0, 0, 0};
+    return stub("07.2", cell3{0, 0, 0});
 }
 
 CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
@@ -45,7 +46,7 @@ CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
     // EXERCISE 07.3: the cells the box overlaps: from the cell of its min corner to the cell of its
     // max corner, on each axis (both included).
     // Hint: two calls of cell_of (07.2).
-    return {{0, 0, 0}, {0, 0, 0}};
+    return stub("07.3", CellRange{{0, 0, 0}, {0, 0, 0}});
 }
 
 GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
@@ -61,7 +62,7 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
     //      t_max = t_first rounded to float, and t_end = min(t_end, boundary_t(walk, a, m)).
     // Hint: s is grid.cell_size[a]; static_cast<double>(x) before dividing; leave the other axes as
     // GridWalk{} has them (infinity, 0).
-    return GridWalk{};
+    return stub("07.4", GridWalk{});
 }
 
 bool next_cell(GridWalk& walk)
@@ -72,7 +73,7 @@ bool next_cell(GridWalk& walk)
     //    return false.
     // 3. t_enter = t_max[a]; p += step_p[a]; ++steps[a]; t_max[a] = boundary_t(walk, a, steps[a]).
     // Hint: written as !(t_max[a] < t_end), the test also stops a walk whose t is NaN.
-    return false;
+    return stub("07.5", false);
 }
 
 bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Interval range, const Objects& objects,
@@ -83,7 +84,7 @@ bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Int
     // grid.cell_start[walk.p + 1]: when objects.intersect(k, ray, closer_than(range, best, k), hit)
     // and hit.t <= walk.cell_exit(), best = hit. Return whether best changed.
     // Hint: a hit beyond cell_exit() is not wrong, only early: leave it, a later cell finds it again.
-    return false;
+    return stub("07.6", false);
 }
 
 }  // namespace rt

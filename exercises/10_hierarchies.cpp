@@ -9,6 +9,7 @@
 // This chapter uses chapter 02's objects (Objects::intersect, closer_than) and the slab test
 // (common/bounds.hpp); the build is given (bvh.hpp).
 #include "10_hierarchies/10_hierarchies.hpp"
+#include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include "common/stats.hpp"
 
@@ -24,7 +25,7 @@ float sah_cost(const Bounds& parent, const Bounds& left, int n_left, const Bound
     // 2. cost = sah_traversal_cost + share_left n_left sah_intersect_cost + share_right n_right
     //    sah_intersect_cost.
     // Hint: Bounds::empty() tells an empty box; its half_area is 0 too.
-    return infinity;
+    return stub("10.1", infinity);
 }
 
 SahSplit best_split(const Bounds& parent, const std::vector<SahBin>& bins)
@@ -35,7 +36,7 @@ SahSplit best_split(const Bounds& parent, const std::vector<SahBin>& bins)
     //    bins.size() - 2 with both sides non-empty, cost = sah_cost(parent, left box, left count,
     //    right box, right count); keep the least (strictly less: the first of equal costs stays).
     // Hint: std::vector<Bounds> and std::vector<int> of bins.size() for the right side.
-    return SahSplit{};
+    return stub("10.2", SahSplit{});
 }
 
 bool make_leaf(int n, int depth, int leaf_size, int max_depth, float best_split_cost)
@@ -43,7 +44,7 @@ bool make_leaf(int n, int depth, int leaf_size, int max_depth, float best_split_
     // EXERCISE 10.3: the slides' stopping rule, and the SAH's own.
     // A leaf when n <= leaf_size, or depth >= max_depth, or best_split_cost >= n sah_intersect_cost.
     // Hint: a node with no possible split has best_split_cost = infinity.
-    return true;
+    return stub("10.3", true);
 }
 
 bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& objects, bool any_hit, ObjectHit& hit)
@@ -60,7 +61,7 @@ bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& ob
     //    near one is node i + 1 when ray.dir[node.axis] > 0, else node.first.
     // 5. hit = best when found; return found.
     // Hint: std::uint32_t stack[bvh_stack_size]; int top = 0;
-    return false;
+    return stub("10.4", false);
 }
 
 bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interval range, const Objects& objects,
@@ -74,7 +75,7 @@ bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interva
     //    closest_in_cell(node.grid, walk, ray, range, objects, best). A cell that keeps a hit:
     //    return true. } while (next_cell(walk)); return false.
     // Hint: chapter 07's UniformGrid::closest (grid.hpp) is this walk for one level.
-    return false;
+    return stub("10.5", false);
 }
 
 }  // namespace rt

@@ -13,6 +13,7 @@
 // STUB // always runs (until 03.5 is written it shows only the sky).
 // STUB // Check your work with:  cmake --build --preset grade --target check_03
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ vec3 reflect(const vec3& v, const vec3& n)
     // SOLUTION BEGIN
     return v - 2.0f * glm::dot(v, n) * n;
     // SOLUTION END
-    // STUB return v;
+    // STUB return stub("03.1", v);
 }
 
 std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
@@ -63,7 +64,7 @@ std::optional<vec3> refract(const vec3& v, const vec3& n, float ior)
     // makes the result unit: eta v_s - cos_t facing, with v_s = v + cos_i facing.
     return eta * v + (eta * cos_i - cos_t) * facing;
     // SOLUTION END
-    // STUB return std::nullopt;
+    // STUB return stub("03.2", std::nullopt);
 }
 
 float fresnel_dielectric(float cos_i, float ior)
@@ -92,7 +93,7 @@ float fresnel_dielectric(float cos_i, float ior)
     const float r_par = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
     return 0.5f * (r_perp * r_perp + r_par * r_par);
     // SOLUTION END
-    // STUB return 0.0f;
+    // STUB return stub("03.3", 0.0f);
 }
 
 float fresnel_schlick(float cos_i, float ior)
@@ -122,7 +123,7 @@ float fresnel_schlick(float cos_i, float ior)
     const float m = 1.0f - c;
     return R0 + (1.0f - R0) * (m * m) * (m * m) * m;
     // SOLUTION END
-    // STUB return 0.0f;
+    // STUB return stub("03.4", 0.0f);
 }
 
 color trace(const WhittedScene& scene, const Ray& ray, const TraceSettings& settings, int depth, float weight)
@@ -174,7 +175,7 @@ color trace(const WhittedScene& scene, const Ray& ray, const TraceSettings& sett
     }
     return colour;
     // SOLUTION END
-    // STUB return background(scene, ray.dir);
+    // STUB return stub("03.5", background(scene, ray.dir));
 }
 
 }  // namespace rt

@@ -15,6 +15,7 @@
 // STUB // This chapter uses chapters 01 and 02 only: the intersection tests of chapter 02 (through
 // STUB // hit_sphere and hit_triangle) and its normals.
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "04_shadow_feelers/closest_hit.hpp"
 #include "04_shadow_feelers/feeler.hpp"
 
@@ -49,7 +50,7 @@ color local_shading(const PhongMaterial& m, const vec3& n, const vec3& to_eye, c
     }
     return light * reflected;
     // SOLUTION END
-    // STUB return color(0.0f);
+    // STUB return stub("04.1", color(0.0f));
 }
 
 bool occluded(const LitScene& scene, const point3& origin, const point3& light, float t_min)
@@ -80,7 +81,7 @@ bool occluded(const LitScene& scene, const point3& origin, const point3& light, 
             return true;
     return false;
     // SOLUTION END
-    // STUB return false;
+    // STUB return stub("04.2", false);
 }
 
 point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
@@ -110,7 +111,7 @@ point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
     }
     return moved;
     // SOLUTION END
-    // STUB return p;
+    // STUB return stub("04.3", p);
 }
 
 color shade(const LitScene& scene, const Ray& ray, const Hit& hit, const FeelerSettings& feelers)
@@ -141,7 +142,7 @@ color shade(const LitScene& scene, const Ray& ray, const Hit& hit, const FeelerS
     }
     return c;
     // SOLUTION END
-    // STUB return color(0.0f);
+    // STUB return stub("04.4", color(0.0f));
 }
 
 }  // namespace rt

@@ -15,6 +15,7 @@
 // STUB // This chapter builds on chapter 04: direct_light calls its local_shading (04.1) and its
 // STUB // shadow feeler (light_blocked, which calls your 04.2 and 04.3).
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "04_shadow_feelers/feeler.hpp"
 #include "05_soft_shadows/05_soft_shadows.hpp"
 #include "05_soft_shadows/light_samples.hpp"
@@ -31,7 +32,7 @@ point3 point_on_rectangle(const AreaLight& light, sample2 u)
     // SOLUTION BEGIN
     return light.centre + (2.0f * u.x - 1.0f) * light.axis_u + (2.0f * u.y - 1.0f) * light.axis_v;
     // SOLUTION END
-    // STUB return light.centre;
+    // STUB return stub("05.1", light.centre);
 }
 
 point3 point_on_disc(const AreaLight& light, sample2 u)
@@ -59,7 +60,7 @@ point3 point_on_disc(const AreaLight& light, sample2 u)
     }
     return light.centre + (r * std::cos(phi)) * light.axis_u + (r * std::sin(phi)) * light.axis_v;
     // SOLUTION END
-    // STUB return light.centre;
+    // STUB return stub("05.2", light.centre);
 }
 
 sample2 stratified_sample(int k, int n, Rng& rng)
@@ -77,7 +78,7 @@ sample2 stratified_sample(int k, int n, Rng& rng)
     const float y = std::min((static_cast<float>(b) + rng.next_float()) / side, one_minus_epsilon);
     return {x, y};
     // SOLUTION END
-    // STUB return {0.5f, 0.5f};
+    // STUB return stub("05.3", sample2{0.5f, 0.5f});
 }
 
 color direct_light(const AreaLitScene& scene, const Ray& ray, const Hit& hit, const AreaLight& light,
@@ -115,7 +116,7 @@ color direct_light(const AreaLitScene& scene, const Ray& ray, const Hit& hit, co
     }
     return sum;
     // SOLUTION END
-    // STUB return color(0.0f);
+    // STUB return stub("05.4", color(0.0f));
 }
 
 }  // namespace rt

@@ -15,6 +15,7 @@
 // STUB // This chapter builds on chapter 01 (primary_ray, the pinhole ray, which 06.3 calls); its
 // STUB // program and figure also use chapter 02's spheres and triangles and chapter 04's shading.
 #include "06_depth_of_field/06_depth_of_field.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 #include "01_ray_casting/01_ray_casting.hpp"
 
 #include <cmath>
@@ -49,7 +50,7 @@ point2 concentric_disc(point2 square)
     }
     return r * point2(std::cos(phi), std::sin(phi));
     // SOLUTION END
-    // STUB return point2(0.0f);
+    // STUB return stub("06.1", point2(0.0f));
 }
 
 point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
@@ -63,7 +64,7 @@ point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
     const float advance = glm::dot(pinhole.dir, -cam.w);
     return pinhole.at(lens.focus_distance / advance);
     // SOLUTION END
-    // STUB return pinhole.origin;
+    // STUB return stub("06.2", pinhole.origin);
 }
 
 Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng& rng)
@@ -87,7 +88,7 @@ Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng
     const point3 on_lens = cam.eye + lens.aperture_radius * (d.x * cam.u + d.y * cam.v);
     return Ray{on_lens, glm::normalize(focal_point(cam, lens, pinhole) - on_lens)};
     // SOLUTION END
-    // STUB return Ray{cam.eye, -cam.w};
+    // STUB return stub("06.3", Ray{cam.eye, -cam.w});
 }
 
 }  // namespace rt

@@ -16,6 +16,7 @@
 // STUB // This chapter uses chapter 02's objects (Objects::intersect, closer_than) and the slab test
 // STUB // (common/bounds.hpp); the grid's build and its query loops are given (grid.hpp).
 #include "07_uniform_grid/07_uniform_grid.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,7 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_
         return n;
     }
     // SOLUTION END
-    // STUB return {1, 1, 1};
+    // STUB return stub("07.1", cell3{1, 1, 1});
 }
 
 cell3 cell_of(const GridShape& grid, const point3& p)
@@ -83,7 +84,7 @@ cell3 cell_of(const GridShape& grid, const point3& p)
     }
     return c;
     // SOLUTION END
-    // STUB return {0, 0, 0};
+    // STUB return stub("07.2", cell3{0, 0, 0});
 }
 
 CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
@@ -94,7 +95,7 @@ CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
     // SOLUTION BEGIN
     return {cell_of(grid, bounds.min), cell_of(grid, bounds.max)};
     // SOLUTION END
-    // STUB return {{0, 0, 0}, {0, 0, 0}};
+    // STUB return stub("07.3", CellRange{{0, 0, 0}, {0, 0, 0}});
 }
 
 GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
@@ -138,7 +139,7 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
     }
     return walk;
     // SOLUTION END
-    // STUB return GridWalk{};
+    // STUB return stub("07.4", GridWalk{});
 }
 
 bool next_cell(GridWalk& walk)
@@ -161,7 +162,7 @@ bool next_cell(GridWalk& walk)
     walk.t_max[a] = boundary_t(walk, a, walk.steps[a]);
     return true;
     // SOLUTION END
-    // STUB return false;
+    // STUB return stub("07.5", false);
 }
 
 bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Interval range, const Objects& objects,
@@ -185,7 +186,7 @@ bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Int
     }
     return found;
     // SOLUTION END
-    // STUB return false;
+    // STUB return stub("07.6", false);
 }
 
 }  // namespace rt

@@ -15,6 +15,7 @@
 // STUB //
 // STUB // This chapter uses chapter 07's grid shape and walk (07.4, 07.5) and chapter 02's objects.
 #include "09_hashed_voxels/09_hashed_voxels.hpp"
+// STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
 #include "common/stats.hpp"
 
@@ -28,7 +29,7 @@ std::int32_t residue_step(std::int32_t step_p, std::uint32_t M)
     // SOLUTION BEGIN
     return static_cast<std::int32_t>(static_cast<std::int64_t>(step_p) % static_cast<std::int64_t>(M));
     // SOLUTION END
-    // STUB return 0;
+    // STUB return stub("09.1", 0);
 }
 
 std::uint32_t advance_residue(std::uint32_t r, std::int32_t step, std::uint32_t M)
@@ -43,7 +44,7 @@ std::uint32_t advance_residue(std::uint32_t r, std::int32_t step, std::uint32_t 
         next += M;
     return static_cast<std::uint32_t>(next);
     // SOLUTION END
-    // STUB return r;
+    // STUB return stub("09.2", r);
 }
 
 bool occupied(const OccupancyBits& bits, std::int32_t p)
@@ -54,7 +55,7 @@ bool occupied(const OccupancyBits& bits, std::int32_t p)
     const auto u = static_cast<std::uint32_t>(p);
     return (bits.words[u >> 6] >> (u & 63u)) & 1u;
     // SOLUTION END
-    // STUB return false;
+    // STUB return stub("09.3", false);
 }
 
 const HashedCell* find_cell(const HashTable& table, std::int32_t p, std::uint32_t r)
@@ -68,7 +69,7 @@ const HashedCell* find_cell(const HashTable& table, std::int32_t p, std::uint32_
             return &table.cells[i];
     return nullptr;
     // SOLUTION END
-    // STUB return nullptr;
+    // STUB return stub("09.4", nullptr);
 }
 
 bool closest_in_hashed_cell(const HashTable& table, const OccupancyBits& bits, const GridWalk& walk, std::uint32_t r,
@@ -101,7 +102,7 @@ bool closest_in_hashed_cell(const HashTable& table, const OccupancyBits& bits, c
     }
     return found;
     // SOLUTION END
-    // STUB return false;
+    // STUB return stub("09.5", false);
 }
 
 }  // namespace rt

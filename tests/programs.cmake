@@ -18,6 +18,28 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   set_tests_properties(programs.${chapter}.nan_pixel_fails PROPERTIES LABELS "programs")
 endforeach()
 
+# A figure drawn by unfinished exercises says which stubs drew it (a handout's first render); the
+# solutions' figure says nothing of stubs.
+if(RT_EXERCISES_DIR STREQUAL "${PROJECT_SOURCE_DIR}/exercises")
+  foreach(chapter 01_ray_casting 03_reflection_refraction)
+    string(SUBSTRING "${chapter}" 0 2 nn)
+    rt_chapter_libraries(libs ${nn} stubs)
+    add_executable(stubs_${chapter} "${PROJECT_SOURCE_DIR}/chapters/${chapter}/main.cpp")
+    target_link_libraries(stubs_${chapter} PRIVATE ${libs} nff_generators)
+  endforeach()
+  rt_expect_exit(01_ray_casting.stubs_named stubs_01_ray_casting 0
+    "was drawn with 2 exercises still stubs: 01.1 01.3 \\(grep -n \"EXERCISE 01.1\""
+    --width 8 --height 6 --out "${CMAKE_CURRENT_BINARY_DIR}/programs/01_stubs.png")
+  rt_expect_exit(03_reflection_refraction.stubs_named stubs_03_reflection_refraction 0
+    "exercises still stubs: 01.1 .*03.5 "
+    --width 8 --height 6 --out "${CMAKE_CURRENT_BINARY_DIR}/programs/03_stubs.png")
+endif()
+add_test(NAME programs.01_ray_casting.solutions_name_no_stub
+  COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:01_ray_casting>" -D STATUS=0 -D MATCH=. -D "NO_MATCH=stub"
+    -D "ARGS=--width|8|--height|6|--out|${CMAKE_CURRENT_BINARY_DIR}/programs/01_solutions.png|--stats"
+    -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
+set_tests_properties(programs.01_ray_casting.solutions_name_no_stub PROPERTIES LABELS "programs")
+
 foreach(chapter IN LISTS RT_CHAPTERS)
   rt_expect_exit(${chapter}.unknown_flag ${chapter} 2 "unknown option '--colour'" --colour)
   rt_expect_exit(${chapter}.zero_width ${chapter} 2 "--width must be between 1 and" --width 0)
