@@ -70,4 +70,9 @@ color viridis(float v);
 // corner at (x, y); returns the text's width in pixels.
 int draw_text(Image& image, int x, int y, const std::string& text, const color& c, int scale = 2);
 
+// A caption that reads over any picture: white text on a dark band, top left corner at (x, y),
+// the font scaled to the image's height (1 below 160 pixels high). Drawn only where it fits: an
+// image under 40 pixels high keeps its pixels.
+void draw_label(Image& image, int x, int y, const std::string& text);
+
 }  // namespace rt

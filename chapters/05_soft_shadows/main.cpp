@@ -5,6 +5,7 @@
 #include "05_soft_shadows/figure.hpp"
 #include "05_soft_shadows/nff_scene.hpp"
 #include "common/cli.hpp"
+#include "common/heatmap.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
@@ -181,6 +182,12 @@ int main(int argc, char** argv)
             sweep(o);
             return 0;
         }
-        return write_figure(o.common, [&] { return ch05::render_figure(render_settings(o.common), sampling); });
+        return write_figure(o.common, [&] {
+            Image figure = ch05::render_figure(render_settings(o.common), sampling);
+            // The slides' two captions, so a slide or a handout needs no legend.
+            draw_label(figure, 6, 6, "point lights: hard shadows");
+            draw_label(figure, figure.width / 2 + 6, 6, "area lights: soft shadows");
+            return figure;
+        });
     });
 }

@@ -1,5 +1,6 @@
 // The heat map (common/heatmap.hpp): its colours follow the scale, linear or logarithmic, a shared
-// top puts maps on one scale, and a map too low for its colour bar is still drawn.
+// top puts maps on one scale, a map too low for its colour bar is still drawn, and a label reads
+// over any picture.
 #include "common/heatmap.hpp"
 #include "tests/grader/graded.hpp"
 
@@ -55,4 +56,31 @@ TEST_CASE("a heat map only a few pixels high is drawn without its colour bar, an
         CHECK(image.height == h);
         CHECK(image.width > 6);
     }
+}
+
+TEST_CASE("a label darkens a band under white text and an image too low for one keeps its pixels")
+{
+    Image tall(200, 80);
+    for (color& c : tall.pixels)
+        c = color(0.8f);
+    draw_label(tall, 5, 5, "area lights");
+    int white = 0, darkened = 0;
+    for (int j = 0; j < tall.height; ++j)
+        for (int i = 0; i < tall.width; ++i) {
+            const color c = tall.at(i, j);
+            white += same(c, color(1.0f));
+            darkened += same(c, color(0.2f));
+            if (!same(c, color(0.8f)))
+                CHECK((i >= 5 && j >= 5 && j < 5 + 7 + 4));  // only inside the label's band
+        }
+    CHECK(white > 20);
+    CHECK(darkened > white);
+    CHECK(same(tall.at(4, 6), color(0.8f)));  // left of the band
+
+    Image low(200, 39);
+    for (color& c : low.pixels)
+        c = color(0.8f);
+    draw_label(low, 5, 5, "area lights");
+    for (const color& c : low.pixels)
+        REQUIRE(same(c, color(0.8f)));
 }
