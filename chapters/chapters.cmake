@@ -72,6 +72,21 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND figure_files "${figure}")
 endforeach()
 add_custom_target(figures DEPENDS ${figure_files})
+
+# The figures the README and the lessons show, small enough to keep in the repository and large
+# enough to judge: `cmake --build build/release --target readme_figures` rewrites
+# chapters/NN_name/figure.png (after a change to a figure; look at them before committing).
+set(RT_README_SIZE_05_soft_shadows --width 600 --height 240)
+set(readme_commands "")
+foreach(chapter IN LISTS RT_CHAPTERS)
+  set(size --width 480 --height 270)
+  if(DEFINED RT_README_SIZE_${chapter})
+    set(size ${RT_README_SIZE_${chapter}})
+  endif()
+  list(APPEND readme_commands COMMAND ${chapter} --out "${CMAKE_SOURCE_DIR}/chapters/${chapter}/figure.png"
+    ${RT_FIGURE_ARGS_${chapter}} ${size})
+endforeach()
+add_custom_target(readme_figures ${readme_commands} COMMENT "Rendering chapters/NN_name/figure.png" VERBATIM)
 # The scene generator the README points instructors to comes with the figures.
 add_dependencies(figures nff_generate)
 
