@@ -36,7 +36,9 @@ std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>
     // disc = r^2 - |f - bV|^2 (no hit when disc <= 0). With c = |f|^2 - r^2 the roots of
     // t^2 + 2bt + c = 0 are q and c/q, where q = -b - sign(b) sqrt(disc): -b and the square root
     // then have the same sign and add without cancelling. Try the nearer root first.
-    // Hint: write sign(b) sqrt(disc) as (b >= 0 ? sqrt(disc) : -sqrt(disc)); std::swap orders two values.
+    // Compute in double (dvec3, double), even when T is float: see the lesson's "huge" sphere.
+    // Hint: dvec3(ray.origin) converts; write sign(b) sqrt(disc) as (b >= 0 ? sqrt(disc) : -sqrt(disc));
+    // std::swap orders two values; return the root as T.
     return stub("02.2", std::nullopt);
 }
 

@@ -57,19 +57,24 @@ std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>
     // disc = r^2 - |f - bV|^2 (no hit when disc <= 0). With c = |f|^2 - r^2 the roots of
     // t^2 + 2bt + c = 0 are q and c/q, where q = -b - sign(b) sqrt(disc): -b and the square root
     // then have the same sign and add without cancelling. Try the nearer root first.
-    // Hint: write sign(b) sqrt(disc) as (b >= 0 ? sqrt(disc) : -sqrt(disc)); std::swap orders two values.
+    // Compute in double (dvec3, double), even when T is float: see the lesson's "huge" sphere.
+    // Hint: dvec3(ray.origin) converts; write sign(b) sqrt(disc) as (b >= 0 ? sqrt(disc) : -sqrt(disc));
+    // std::swap orders two values; return the root as T.
     // SOLUTION BEGIN
-    const vec3_t<T> f = ray.origin - sphere.centre;
-    const T b = glm::dot(f, ray.dir);
-    const vec3_t<T> perp = f - b * ray.dir;  // from the centre to the ray's closest point
-    const T r2 = sphere.radius * sphere.radius;
-    const T disc = r2 - glm::dot(perp, perp);
+    // In double, f = E - O of two floats is exact and every later rounding is 2^-53: a ray from just
+    // above a huge sphere keeps t to 1e-7 where float arithmetic lost it to 2e-3.
+    const dvec3 f = dvec3(ray.origin) - dvec3(sphere.centre);
+    const dvec3 V = dvec3(ray.dir);
+    const double b = glm::dot(f, V);
+    const dvec3 perp = f - b * V;  // from the centre to the ray's closest point
+    const double r2 = double(sphere.radius) * double(sphere.radius);
+    const double disc = r2 - glm::dot(perp, perp);
     if (disc <= 0)
         return std::nullopt;
-    const T c = glm::dot(f, f) - r2;
-    const T root = std::sqrt(disc);
-    const T q = b >= 0 ? -b - root : -b + root;
-    T near_t = c / q, far_t = q;
+    const double c = glm::dot(f, f) - r2;
+    const double root = std::sqrt(disc);
+    const double q = b >= 0 ? -b - root : -b + root;
+    T near_t = static_cast<T>(c / q), far_t = static_cast<T>(q);
     if (near_t > far_t)
         std::swap(near_t, far_t);
     for (const T t : {near_t, far_t})

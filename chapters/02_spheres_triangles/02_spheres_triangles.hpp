@@ -34,6 +34,8 @@ std::optional<T> hit_sphere_slide(const BasicRay<T>& ray, const BasicSphere<T>& 
 // (Ray Tracing Gems ch. 7). With f = E - O and b = f.V: disc = r^2 - |f - bV|^2, no hit when
 // disc <= 0; else c = |f|^2 - r^2, q = -b - sign(b) sqrt(disc), and the two roots are c/q and q.
 // Returns the nearer root inside the range, else the farther one. V must be unit length.
+// Computed in double whatever T is, so that a ray starting just above a huge sphere keeps t to
+// float's own precision (the lesson's "huge" row).
 template <class T>
 std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>& sphere, BasicInterval<T> range);
 
