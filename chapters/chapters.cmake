@@ -21,6 +21,12 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   if(RT_HAVE_SOLUTIONS)
     add_library(sol_${nn} OBJECT "${CMAKE_SOURCE_DIR}/solutions/${chapter}.cpp")
     target_link_libraries(sol_${nn} PUBLIC rt_common)
+    if(RT_COVERAGE)
+      # The coverage preset: branch counts of the solutions alone, unoptimised so that every branch
+      # of the source stays a branch of the program.
+      target_compile_options(sol_${nn} PRIVATE -O0 --coverage)
+      target_link_options(sol_${nn} PUBLIC --coverage)
+    endif()
   endif()
 endforeach()
 

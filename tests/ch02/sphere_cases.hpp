@@ -3,9 +3,11 @@
 #pragma once
 
 #include "02_spheres_triangles/02_spheres_triangles.hpp"
+#include "common/random.hpp"
 #include "tests/ch02/describe.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 
 namespace rt::grader::spheres {
@@ -157,11 +159,43 @@ inline void from_inside_everywhere(SphereTestFn test)
     CHECK(score.max_rel_t_error <= 1e-4);
 }
 
+// In double the test keeps double's precision: seeded rays from near the origin at spheres up to 20
+// away, aimed up to 1.5 r from the centre, hit or miss as the exact answer says and t is within
+// 1e-10 of it (a ray that close to tangent, where double cannot tell, is one in 1e14). A float slipped into the double version (a float
+// local, a float literal in a product) costs 1e-7 there.
+inline void keeps_double_precision(std::optional<double> (*test)(const BasicRay<double>&, const BasicSphere<double>&,
+                                                                 BasicInterval<double>))
+{
+    Rng rng(17, 5);
+    const auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng.next_float()); };
+    for (int k = 0; k < 2000; ++k) {
+        const dvec3 origin{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+        const dvec3 centre{uniform(-20, 20), uniform(-20, 20), uniform(-20, -2)};
+        const double radius = uniform(0.1, 1.5);
+        // A target across the ray's way, up to 1.5 r from the centre: about half the rays hit.
+        const dvec3 across = glm::normalize(glm::cross(centre - origin, dvec3(uniform(-1, 1), 1, uniform(-1, 1))));
+        const dvec3 target = centre + uniform(0, 1.5) * radius * across;
+        const BasicRay<double> ray{origin, glm::normalize(target - origin)};
+        const BasicSphere<double> sphere{centre, radius};
+        const BasicInterval<double> range{};
+        const std::optional<double> got = test(ray, sphere, range);
+        const exact::Answer want = exact::sphere(ray, sphere, range);
+        INFO("in double: the ray from " << std::setprecision(17) << origin.x << ", " << origin.y << ", " << origin.z
+             << " along " << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << " against the sphere at "
+             << centre.x << ", " << centre.y << ", " << centre.z << " of radius " << radius << ": got "
+             << (got ? std::to_string(*got) : std::string("no hit")) << ", expected "
+             << (want.hit ? std::to_string(static_cast<double>(want.t)) : std::string("no hit")));
+        REQUIRE(got.has_value() == want.hit);
+        if (got)
+            REQUIRE(std::abs(*got - static_cast<double>(want.t)) <= 1e-10 * static_cast<double>(want.t));
+    }
+}
+
 }  // namespace rt::grader::spheres
 
 // The graded cases every sphere test gets, named after the function and graded as exercise
 // `number`: a ray at the centre and rays beside it, off-centre rays, rays from inside, the range,
-// and (stability) rays from inside in every direction and rays with a NaN or an infinity.
+// the double version's precision, and (stability) rays from inside in every direction and rays with a NaN or an infinity.
 #define RT_SPHERE_BEHAVIOURS(function, number)                                                                   \
     GRADED_TEST(#function ": a ray aimed at the centre hits the near side, rays beside the sphere miss", number, 3) \
     {                                                                                                              \
@@ -178,6 +212,10 @@ inline void from_inside_everywhere(SphereTestFn test)
     GRADED_TEST(#function ": only hits inside the range count; past the near side comes the far one", number, 2)  \
     {                                                                                                              \
         rt::grader::spheres::range_respected(&function<float>);                                                   \
+    }                                                                                                              \
+    GRADED_TEST(#function ": in double, hits and misses as exact and t within 1e-10 of it", number, 1)               \
+    {                                                                                                              \
+        rt::grader::spheres::keeps_double_precision(&function<double>);                                           \
     }                                                                                                              \
     STABILITY_TEST(#function ": rays from inside, in every direction, all hit the far side", number, 1)           \
     {                                                                                                              \

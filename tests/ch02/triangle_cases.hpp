@@ -3,9 +3,11 @@
 #pragma once
 
 #include "02_spheres_triangles/02_spheres_triangles.hpp"
+#include "common/random.hpp"
 #include "tests/ch02/describe.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 
 namespace rt::grader::triangles {
@@ -156,6 +158,26 @@ inline void broken_rays(TriangleTestFn test)
     CHECK(test(sound, tri, Interval{}));
 }
 
+// Triangles so small that their edge products underflow (1e-15 to 1e-25 across, ahead at 1): whatever
+// a test answers, never a NaN. A miss, or a hit with a finite t near 1 and barycentrics in [0, 1].
+inline void underflowing(TriangleTestFn test)
+{
+    for (const float size : {1e-15f, 1e-20f, 1e-25f}) {
+        const Triangle tri{{-size, -size, -1}, {size, -size, -1}, {0, size, -1}};
+        const Ray ray{{0, 0, 0}, {0, 0, -1}};
+        const std::optional<TriangleHit<float>> hit = test(ray, tri, Interval{});
+        INFO(query(ray, tri, Interval{}) << ": got " << show(hit)
+             << ", expected no hit, or a hit at t = 1 with barycentrics in [0, 1]");
+        const bool sound = !hit || (std::abs(hit->t - 1.0f) <= 1e-6f && hit->beta >= 0 && hit->beta <= 1 &&
+                                    hit->gamma >= 0 && hit->gamma <= 1);
+        CHECK(sound);
+    }
+    const Triangle unit{{-1, -1, -1}, {1, -1, -1}, {0, 1, -1}};
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    INFO(query(ray, unit, Interval{}) << ": expected a hit at t = 1");
+    CHECK(test(ray, unit, Interval{}));
+}
+
 // Runs a triangle test on an extreme case and scores it.
 inline extremes::Score run_case(TriangleTestFn test, const extremes::TriangleProbes<float>& probes,
                                 std::vector<extremes::TriangleAnswer<float>>& answers)
@@ -227,11 +249,50 @@ inline void any_direction_length(TriangleTestFn test)
     }
 }
 
+// In double the test keeps double's precision: seeded rays from near the origin at triangles up to
+// 20 away, aimed at barycentric points from -0.3 to 1.2 (about half inside), hit or miss as the
+// exact answer says, with t within 1e-10 of it and the barycentrics within 1e-9 of the aimed ones.
+// A float slipped into the double version costs 1e-7 there.
+inline void keeps_double_precision(std::optional<TriangleHit<double>> (*test)(const BasicRay<double>&,
+                                                                              const BasicTriangle<double>&,
+                                                                              BasicInterval<double>))
+{
+    Rng rng(19, 6);
+    const auto uniform = [&rng](double lo, double hi) { return lo + (hi - lo) * static_cast<double>(rng.next_float()); };
+    const auto random_point = [&](double lo_z, double hi_z) {
+        return dvec3(uniform(-10, 10), uniform(-10, 10), uniform(lo_z, hi_z));
+    };
+    for (int k = 0; k < 2000; ++k) {
+        const dvec3 origin = random_point(-1, 1);
+        const dvec3 a = random_point(-20, -3);
+        const BasicTriangle<double> tri{a, a + dvec3(uniform(-3, 3), uniform(-3, 3), uniform(-1, 1)),
+                                        a + dvec3(uniform(-3, 3), uniform(-3, 3), uniform(-1, 1))};
+        const double beta = uniform(-0.3, 1.2), gamma = uniform(-0.3, 1.2) * (1.0 - 0.5 * beta);
+        const dvec3 target = tri.a + beta * (tri.b - tri.a) + gamma * (tri.c - tri.a);
+        const BasicRay<double> ray{origin, glm::normalize(target - origin)};
+        const BasicInterval<double> range{};
+        const std::optional<TriangleHit<double>> got = test(ray, tri, range);
+        const exact::Answer want = exact::triangle(ray, tri, range);
+        INFO("in double: the ray from " << std::setprecision(17) << origin.x << ", " << origin.y << ", " << origin.z
+             << " aimed at barycentrics " << beta << ", " << gamma << " of the triangle a = " << tri.a.x << ", "
+             << tri.a.y << ", " << tri.a.z << ", b = " << tri.b.x << ", " << tri.b.y << ", " << tri.b.z << ", c = "
+             << tri.c.x << ", " << tri.c.y << ", " << tri.c.z << ": got "
+             << (got ? "t = " + std::to_string(got->t) : std::string("no hit")) << ", expected "
+             << (want.hit ? "t = " + std::to_string(static_cast<double>(want.t)) : std::string("no hit")));
+        REQUIRE(got.has_value() == want.hit);
+        if (got) {
+            REQUIRE(std::abs(got->t - static_cast<double>(want.t)) <= 1e-10 * static_cast<double>(want.t));
+            REQUIRE(std::abs(got->beta - beta) <= 1e-9);
+            REQUIRE(std::abs(got->gamma - gamma) <= 1e-9);
+        }
+    }
+}
+
 }  // namespace rt::grader::triangles
 
 // The graded cases every triangle test gets, named after the function and graded as exercise
 // `number`: rays inside and just outside, both faces, edges and corners, parallel rays, the range,
-// and (stability) every scale, any direction length, and rays with a NaN or an infinity.
+// the double version's precision, and (stability) every scale, any direction length, and rays with a NaN or an infinity.
 #define RT_TRIANGLE_BEHAVIOURS(function, number)                                                                      \
     GRADED_TEST(#function ": rays into the triangle hit with the right t and barycentrics; just outside an edge, none does", \
                 number, 3)                                                                                             \
@@ -255,6 +316,10 @@ inline void any_direction_length(TriangleTestFn test)
     {                                                                                                                  \
         rt::grader::triangles::range_respected(&function<float>);                                                     \
     }                                                                                                                  \
+    GRADED_TEST(#function ": in double, hits and misses as exact with t and barycentrics to 1e-9", number, 1)         \
+    {                                                                                                                  \
+        rt::grader::triangles::keeps_double_precision(&function<double>);                                             \
+    }                                                                                                                  \
     STABILITY_TEST(#function ": triangles 1e-4 to 1e6 across are hit like unit ones", number, 1)                      \
     {                                                                                                                  \
         rt::grader::triangles::every_scale(&function<float>);                                                         \
@@ -266,4 +331,8 @@ inline void any_direction_length(TriangleTestFn test)
     STABILITY_TEST(#function ": rays with a NaN or an infinity in them hit nothing", number, 1)                        \
     {                                                                                                                  \
         rt::grader::triangles::broken_rays(&function<float>);                                                         \
+    }                                                                                                                  \
+    STABILITY_TEST(#function ": a triangle so small its products underflow gives no NaN", number, 1)                  \
+    {                                                                                                                  \
+        rt::grader::triangles::underflowing(&function<float>);                                                        \
     }

@@ -87,6 +87,22 @@ GRADED_TEST("local_shading: a light behind the surface gives nothing, not even a
     check(plastic, up, tilted(-10.0), tilted(80.0), light);
 }
 
+GRADED_TEST("local_shading: a halfway vector below the surface (the eye below it) gives no highlight, and no NaN", "04.1", 1)
+{
+    // shade() turns n toward the eye, so it never asks this, but nothing in the contract forbids it:
+    // with the light above and the eye below, h = l + v can point below the surface, n.h < 0, and
+    // (n.h)^p is positive for an even p and NaN for p = 2.5 unless max(0, n.h) comes first.
+    for (const float p : {20.0f, 2.5f}) {
+        const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.8f), p};
+        const vec3 l = tilted(60.0), v = tilted(-150.0);
+        const color got = local_shading(plastic, up, v, l, color(1.0f));
+        const color want = reference(plastic, up, v, l, color(1.0f));
+        INFO(query(plastic, up, v, l, color(1.0f)) << ": n.h = " << glm::dot(up, glm::normalize(l + v)) << ", got "
+             << show(got) << ", expected " << show(want) << " (the diffuse term alone)");
+        CHECK(same_colour(got, want));
+    }
+}
+
 STABILITY_TEST("local_shading: never a NaN, with the light straight opposite the eye or grazing, p from 0.5 to 1000", "04.1", 1)
 {
     // l = -v leaves no halfway vector (normalising 0 gives a NaN): the highlight is 0 there.

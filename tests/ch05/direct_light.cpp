@@ -188,3 +188,20 @@ STABILITY_TEST("direct_light: never a NaN, from a light lying on the surface, on
     REQUIRE((std::isfinite(e.mean.x) && std::isfinite(e.mean.y) && std::isfinite(e.mean.z)));
     CHECK(agrees(e, want));
 }
+
+STABILITY_TEST("direct_light: a light of no size at the shaded point itself gives 0 and no NaN; a real one still lights", "05.4", 1)
+{
+    // Every sample of a disc of radius 0 centred on the point is the point: d^2 = 0, no direction
+    // to the light, and 1 / d^2 infinite. The sample must be skipped before anything divides by d.
+    const FloorView v = floor_view(target);
+    const AreaLight none = disc_light(v.hit.p, down, 0.0f, warm);
+    const Estimate e = estimate(v, none, stratified16, 4, 72);
+    INFO(describe(v, none, stratified16, e, dvec3(0.0), "a light of radius 0 exactly at the shaded point"));
+    REQUIRE((std::isfinite(e.mean.x) && std::isfinite(e.mean.y) && std::isfinite(e.mean.z)));
+    CHECK(e.mean == dvec3(0.0));
+    const AreaLight real = rectangle_light(target + vec3(0, 2, 0), {0.5f, 0, 0}, {0, 0, 0.5f}, warm);
+    const Estimate lit = estimate(v, real, stratified16, 10, 73);
+    const dvec3 want = exact_light(real, dvec3(v.hit.p), {0, 1, 0});
+    INFO(describe(v, real, stratified16, lit, want, "a square light 2 above the point"));
+    CHECK(agrees(lit, want));
+}
