@@ -108,6 +108,18 @@ GRADED_TEST("trace: a ray whose weight would fall below min_weight is not traced
     CHECK(glass.rays.reflected == 0);
     CHECK(glass.rays.refracted == 2);
     CHECK(near(glass.colour, 0.9216f * sky));
+    // With min_weight 0.97 the refracted share (0.96) is cut too: no secondary ray at all, and the
+    // glass shows what it shows at max_depth 0.
+    settings.min_weight = 0.97f;
+    const Traced cut = run(glass_sphere(1.5f), Ray{{0, 0, 0}, {0, 0, -1}}, settings);
+    TraceSettings no_depth;
+    no_depth.max_depth = 0;
+    const Traced flat = run(glass_sphere(1.5f), Ray{{0, 0, 0}, {0, 0, -1}}, no_depth);
+    INFO(cut.report << "; through a glass sphere with min_weight 0.97: expected no secondary rays and "
+         << show(flat.colour) << ", the colour at max_depth 0");
+    CHECK(cut.rays.reflected == 0);
+    CHECK(cut.rays.refracted == 0);
+    CHECK(near(cut.colour, flat.colour));
 }
 
 GRADED_TEST("trace: glass splits its light by Fresnel; through the centre of a glass sphere the sky comes back F + (1 - F)^2 times", "03.5", 3)

@@ -59,6 +59,19 @@ GRADED_TEST("closest_in_hashed_cell: an empty cell costs its bit alone, no looku
     CHECK(best.object == 0);
     CHECK(counter(Counter::table_lookups) == 1);
     CHECK(counter(Counter::intersection_tests) == 1);
+
+    // A bit that is on for a cell the table does not hold (the build never writes one, but bits and
+    // table come from separate arrays): the lookup finds nothing, and nothing is tested.
+    Hashed stray = h;
+    stray.bits.words[0] |= std::uint64_t{1} << 1;
+    reset_counters();
+    const bool lost = closest_in_hashed_cell(stray.table, stray.bits, walk_in(1), 1, ray, all, objects(), best);
+    INFO("cell 1 with its bit on but no entry in the table: returned " << lost << " after "
+         << counter(Counter::table_lookups) << " lookups and " << counter(Counter::intersection_tests)
+         << " tests; expected false, 1 and 0");
+    CHECK(!lost);
+    CHECK(counter(Counter::table_lookups) == 1);
+    CHECK(counter(Counter::intersection_tests) == 0);
 }
 
 GRADED_TEST("closest_in_hashed_cell: the cell's own list, not its bucket neighbour's; a hit beyond the cell is left", "09.5", 4)

@@ -65,6 +65,20 @@ GRADED_TEST("best_split: the cheapest plane between bins, by the SAH, with both 
     INFO("only bin 1 holds objects: got split " << none.split << " at " << none.cost << ", expected no split (-1, infinity)");
     CHECK(none.split == -1);
     CHECK(std::isinf(none.cost));
+
+    // Fewer than two bins leave no plane between them: the builder never bins that few, but a
+    // caller could, and must not read past the bins.
+    for (const int n : {0, 1}) {
+        std::vector<SahBin> few(n);
+        if (n == 1) {
+            few[0].count = 3;
+            few[0].bounds = parent;
+        }
+        const SahSplit lone = best_split(parent, few);
+        INFO(n << " bins: got split " << lone.split << " at " << lone.cost << ", expected no split (-1, infinity)");
+        CHECK(lone.split == -1);
+        CHECK(std::isinf(lone.cost));
+    }
 }
 
 GRADED_TEST("make_leaf: at most leaf_size objects, at the depth limit, or when no split pays", "10.3", 4)

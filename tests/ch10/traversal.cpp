@@ -77,6 +77,10 @@ GRADED_TEST("bvh_query: the any-hit query stops at the first object hit; a miss 
     INFO("a ray passing above both, and a NaN ray: got " << miss << " and " << nan << ", expected no hits");
     CHECK(!miss);
     CHECK(!nan);
+    // A tree of no nodes (a scene with nothing in it) has no root to read: every ray misses.
+    const bool empty = bvh_query(Bvh{}, {{-3, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, Objects{}, false, hit);
+    INFO("a BVH of no nodes: got " << empty << ", expected no hit (and no read of node 0)");
+    CHECK(!empty);
 }
 
 GRADED_TEST("the BVH answers every ray as brute force does, on the kit's scenes and generated ones (SAH and median)", "10.A", 5)
