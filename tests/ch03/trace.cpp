@@ -138,6 +138,29 @@ GRADED_TEST("trace: glass splits its light by Fresnel; through the centre of a g
     CHECK(got.rays.refracted == 2);
 }
 
+GRADED_TEST("trace: a surface that is both mirror and glass reflects k_s + k_t F and refracts k_t (1 - F)", "03.5", 2)
+{
+    // Whitted's k_s S + k_t T with both terms: a black sphere with mirror k_s = 0.3 and glass
+    // k_t = 0.5, head-on. At max_depth 1 the reflected ray sees the sky behind the eye and the
+    // refracted one the black inside of the back wall: (k_s + k_t F) S, after one ray of each.
+    Material both = glass(1.5f);
+    both.mirror = 0.3f;
+    both.transparency = 0.5f;
+    WhittedScene scene = empty_scene();
+    scene.add_sphere({{0, 0, -3}, 1}, color(0.0f), both);
+    TraceSettings settings;
+    settings.max_depth = 1;
+    settings.min_weight = 0.0f;
+    const double F = optics::fresnel_reference(1.0, 1.5);
+    const color expected = static_cast<float>(0.3 + 0.5 * F) * sky;
+    const Traced got = run(scene, Ray{{0, 0, 0}, {0, 0, -1}}, settings);
+    INFO(got.report << "; a black sphere, mirror 0.3 and glass 0.5 (F = " << F << "): expected " << show(expected)
+         << " after 1 reflected and 1 refracted ray: the mirror's share and the glass's reflected share add");
+    CHECK(near(got.colour, expected));
+    CHECK(got.rays.reflected == 1);
+    CHECK(got.rays.refracted == 1);
+}
+
 GRADED_TEST("trace: settings.fresnel picks the reflectance, and total internal reflection traces no refracted ray", "03.5", 2)
 {
     // At max_depth 1 a ray that meets the glass at 60 degrees sees F S: the refracted ray finds
