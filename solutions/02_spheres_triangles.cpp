@@ -58,8 +58,9 @@ std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>
     // t^2 + 2bt + c = 0 are q and c/q, where q = -b - sign(b) sqrt(disc): -b and the square root
     // then have the same sign and add without cancelling. Try the nearer root first.
     // Compute in double (dvec3, double), even when T is float: see the lesson's "huge" sphere.
-    // Hint: dvec3(ray.origin) converts; write sign(b) sqrt(disc) as (b >= 0 ? sqrt(disc) : -sqrt(disc));
-    // std::swap orders two values; return the root as T.
+    // Hint: f = dvec3(ray.origin) - dvec3(sphere.centre) converts, then subtracts (dvec3(E - O) would
+    // keep float's rounding of the difference); write sign(b) sqrt(disc) as
+    // (b >= 0 ? sqrt(disc) : -sqrt(disc)); std::swap orders two values; return the root as T.
     // SOLUTION BEGIN
     // In double, f = E - O of two floats is exact and every later rounding is 2^-53: a ray from just
     // above a huge sphere keeps t to 1e-7 where float arithmetic lost it to 2e-3.
