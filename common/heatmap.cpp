@@ -81,8 +81,8 @@ void draw_label(Image& image, int x, int y, const std::string& text)
     std::vector<char> probe(text.begin(), text.end());
     probe.push_back('\0');
     const int pad = 2 * scale, width = stb_easy_font_width(probe.data()) * scale, height = 7 * scale;
-    for (int j = y; j < std::min(image.height, y + height + 2 * pad); ++j)
-        for (int i = x; i < std::min(image.width, x + width + 2 * pad); ++i)
+    for (int j = std::max(0, y); j < std::min(image.height, y + height + 2 * pad); ++j)
+        for (int i = std::max(0, x); i < std::min(image.width, x + width + 2 * pad); ++i)
             image.at(i, j) = 0.25f * image.at(i, j);
     draw_text(image, x + pad, y + pad, text, color(1.0f), scale);
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace rt::grader::spheres {
 
@@ -161,8 +162,8 @@ inline void from_inside_everywhere(SphereTestFn test)
 
 // In double the test keeps double's precision: seeded rays from near the origin at spheres up to 20
 // away, aimed up to 1.5 r from the centre, hit or miss as the exact answer says and t is within
-// 1e-10 of it (a ray that close to tangent, where double cannot tell, is one in 1e14). A float slipped into the double version (a float
-// local, a float literal in a product) costs 1e-7 there.
+// 1e-10 of it (a ray that close to tangent, where double cannot tell, is one in 1e14). A float
+// slipped into the double version (a float local, a float literal in a product) costs 1e-7 there.
 inline void keeps_double_precision(std::optional<double> (*test)(const BasicRay<double>&, const BasicSphere<double>&,
                                                                  BasicInterval<double>))
 {
@@ -180,11 +181,13 @@ inline void keeps_double_precision(std::optional<double> (*test)(const BasicRay<
         const BasicInterval<double> range{};
         const std::optional<double> got = test(ray, sphere, range);
         const exact::Answer want = exact::sphere(ray, sphere, range);
+        std::ostringstream answers;
+        answers << std::setprecision(17) << "got ";
+        (got ? answers << "t = " << *got : answers << "no hit") << ", expected ";
+        (want.hit ? answers << "t = " << static_cast<double>(want.t) : answers << "no hit");
         INFO("in double: the ray from " << std::setprecision(17) << origin.x << ", " << origin.y << ", " << origin.z
              << " along " << ray.dir.x << ", " << ray.dir.y << ", " << ray.dir.z << " against the sphere at "
-             << centre.x << ", " << centre.y << ", " << centre.z << " of radius " << radius << ": got "
-             << (got ? std::to_string(*got) : std::string("no hit")) << ", expected "
-             << (want.hit ? std::to_string(static_cast<double>(want.t)) : std::string("no hit")));
+             << centre.x << ", " << centre.y << ", " << centre.z << " of radius " << radius << ": " << answers.str());
         REQUIRE(got.has_value() == want.hit);
         if (got)
             REQUIRE(std::abs(*got - static_cast<double>(want.t)) <= 1e-10 * static_cast<double>(want.t));
@@ -195,7 +198,8 @@ inline void keeps_double_precision(std::optional<double> (*test)(const BasicRay<
 
 // The graded cases every sphere test gets, named after the function and graded as exercise
 // `number`: a ray at the centre and rays beside it, off-centre rays, rays from inside, the range,
-// the double version's precision, and (stability) rays from inside in every direction and rays with a NaN or an infinity.
+// the double version's precision, and (stability) rays from inside in every direction and rays
+// with a NaN or an infinity.
 #define RT_SPHERE_BEHAVIOURS(function, number)                                                                   \
     GRADED_TEST(#function ": a ray aimed at the centre hits the near side, rays beside the sphere miss", number, 3) \
     {                                                                                                              \

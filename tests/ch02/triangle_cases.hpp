@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace rt::grader::triangles {
 
@@ -273,12 +274,15 @@ inline void keeps_double_precision(std::optional<TriangleHit<double>> (*test)(co
         const BasicInterval<double> range{};
         const std::optional<TriangleHit<double>> got = test(ray, tri, range);
         const exact::Answer want = exact::triangle(ray, tri, range);
+        std::ostringstream answers;
+        answers << std::setprecision(17) << "got ";
+        (got ? answers << "t = " << got->t << ", beta = " << got->beta << ", gamma = " << got->gamma : answers << "no hit")
+            << ", expected ";
+        (want.hit ? answers << "t = " << static_cast<double>(want.t) : answers << "no hit");
         INFO("in double: the ray from " << std::setprecision(17) << origin.x << ", " << origin.y << ", " << origin.z
              << " aimed at barycentrics " << beta << ", " << gamma << " of the triangle a = " << tri.a.x << ", "
              << tri.a.y << ", " << tri.a.z << ", b = " << tri.b.x << ", " << tri.b.y << ", " << tri.b.z << ", c = "
-             << tri.c.x << ", " << tri.c.y << ", " << tri.c.z << ": got "
-             << (got ? "t = " + std::to_string(got->t) : std::string("no hit")) << ", expected "
-             << (want.hit ? "t = " + std::to_string(static_cast<double>(want.t)) : std::string("no hit")));
+             << tri.c.x << ", " << tri.c.y << ", " << tri.c.z << ": " << answers.str());
         REQUIRE(got.has_value() == want.hit);
         if (got) {
             REQUIRE(std::abs(got->t - static_cast<double>(want.t)) <= 1e-10 * static_cast<double>(want.t));
@@ -292,7 +296,8 @@ inline void keeps_double_precision(std::optional<TriangleHit<double>> (*test)(co
 
 // The graded cases every triangle test gets, named after the function and graded as exercise
 // `number`: rays inside and just outside, both faces, edges and corners, parallel rays, the range,
-// the double version's precision, and (stability) every scale, any direction length, and rays with a NaN or an infinity.
+// the double version's precision, and (stability) every scale, any direction length, rays with a
+// NaN or an infinity, and triangles whose products underflow.
 #define RT_TRIANGLE_BEHAVIOURS(function, number)                                                                      \
     GRADED_TEST(#function ": rays into the triangle hit with the right t and barycentrics; just outside an edge, none does", \
                 number, 3)                                                                                             \
