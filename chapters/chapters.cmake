@@ -17,7 +17,7 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   set_target_properties(ex_${nn} PROPERTIES EXCLUDE_FROM_ALL "${RT_GRADE}")
   target_link_libraries(ex_${nn} PUBLIC rt_common)
   # A stub's parameters are unused until the student writes the answer: no warning for that.
-  target_compile_options(ex_${nn} PRIVATE -Wno-unused-parameter)
+  target_compile_options(ex_${nn} PRIVATE ${RT_NO_UNUSED_PARAMETER_WARNING})
   if(RT_HAVE_SOLUTIONS)
     add_library(sol_${nn} OBJECT "${CMAKE_SOURCE_DIR}/solutions/${chapter}.cpp")
     target_link_libraries(sol_${nn} PUBLIC rt_common)

@@ -1,6 +1,6 @@
 #include "common/heatmap.hpp"
 
-#include <stb/stb_easy_font.h>
+#include <stb_easy_font.h>
 
 #include <algorithm>
 #include <cmath>

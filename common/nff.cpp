@@ -1,6 +1,7 @@
 #include "common/nff.hpp"
 
 #include "common/error.hpp"
+#include "common/number.hpp"
 #include "common/polygon.hpp"
 
 #include <algorithm>
@@ -149,24 +150,6 @@ private:
     int line_ = 1;
     int last_line_ = 1;
 };
-
-// Parses one token as a decimal number: "%g" forms ("-1.5", ".5", "2.", "1e-3", "+4"), and the
-// words "nan" and "inf", which the caller refuses by name. out_of_range: beyond a double's range.
-enum class NumberStatus { ok, not_a_number, out_of_range };
-
-NumberStatus parse_double(std::string_view text, double& value)
-{
-    // from_chars refuses a leading '+', which printf's "%+g" writes.
-    if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+')
-        text.remove_prefix(1);
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::general);
-    if (ec == std::errc::result_out_of_range && ptr == end)
-        return NumberStatus::out_of_range;
-    if (ec != std::errc() || ptr != end)
-        return NumberStatus::not_a_number;
-    return NumberStatus::ok;
-}
 
 class Parser {
 public:

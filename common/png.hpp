@@ -1,4 +1,4 @@
-// PNG files through stb_image_write and stb_image (Debian's libstb).
+// PNG files through stb_image_write and stb_image (compiled once, in stb.cpp).
 #pragma once
 
 #include "common/image.hpp"

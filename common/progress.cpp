@@ -4,9 +4,27 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+
+#ifdef _WIN32
+#include <io.h>
+#else
 #include <unistd.h>
+#endif
 
 namespace rt {
+
+namespace {
+
+bool stderr_is_terminal()
+{
+#ifdef _WIN32
+    return _isatty(_fileno(stderr)) != 0;
+#else
+    return isatty(fileno(stderr)) != 0;
+#endif
+}
+
+}  // namespace
 
 std::string readable_duration(double seconds)
 {
@@ -22,7 +40,7 @@ std::string readable_duration(double seconds)
 }
 
 Progress::Progress(std::string what, long total)
-    : what_(std::move(what)), total_(total), enabled_(total > 0), terminal_(isatty(fileno(stderr)) != 0),
+    : what_(std::move(what)), total_(total), enabled_(total > 0), terminal_(stderr_is_terminal()),
       log_period_(progress_log_seconds), start_(std::chrono::steady_clock::now()), last_print_(start_)
 {
     if (const char* period = std::getenv("RT_PROGRESS_SECONDS"))

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "common/image.hpp"
+#include "common/parallel.hpp"
 #include "common/progress.hpp"
 #include "common/random.hpp"
 #include "common/stats.hpp"
@@ -13,10 +14,7 @@
 #include <glm/common.hpp>
 
 #include <cstdint>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <string>
 
 namespace rt {
 
@@ -24,7 +22,7 @@ struct RenderSettings {
     int width = 320;
     int height = 240;
     int spp = 1;              // samples per pixel: 1 samples the pixel centre, more are spread at random
-    int threads = 0;          // 0: as many as OpenMP offers
+    int threads = 0;          // 0: one a core
     std::uint64_t seed = 1;   // the same seed gives the same image
     bool show_progress = true;
 };
@@ -68,37 +66,30 @@ Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_
     if (variance_of_mean)
         *variance_of_mean = Image(s.width, s.height);
     Progress progress("rendering", s.show_progress ? s.height : 0);
-#ifdef _OPENMP
-    const int threads = s.threads > 0 ? s.threads : omp_get_max_threads();
-#pragma omp parallel num_threads(threads)
-#endif
-    {
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 1)
-#endif
-        for (int j = 0; j < s.height; ++j) {
-            for (int i = 0; i < s.width; ++i) {
-                Rng rng = pixel_rng(s.seed, i, j, s.width);
-                color sum(0.0f), sum_sq(0.0f);
-                for (int k = 0; k < s.spp; ++k) {
-                    const PixelSample ps = sample_position(i, j, s.spp, rng);
-                    const color c = radiance(ps.x, ps.y, rng);
-                    sum += c;
-                    sum_sq += c * c;
-                }
-                const float n = static_cast<float>(s.spp);
-                image.at(i, j) = sum / n;
-                if (variance_of_mean && s.spp > 1) {
-                    // Unbiased sample variance, then divided by n for the variance of the mean.
-                    const color var = glm::max(sum_sq - sum * sum / n, color(0.0f)) / (n - 1.0f);
-                    variance_of_mean->at(i, j) = var / n;
-                }
+    const int threads = parallel_for(s.height, s.threads, 1, [&](long row) {
+        const int j = static_cast<int>(row);
+        for (int i = 0; i < s.width; ++i) {
+            Rng rng = pixel_rng(s.seed, i, j, s.width);
+            color sum(0.0f), sum_sq(0.0f);
+            for (int k = 0; k < s.spp; ++k) {
+                const PixelSample ps = sample_position(i, j, s.spp, rng);
+                const color c = radiance(ps.x, ps.y, rng);
+                sum += c;
+                sum_sq += c * c;
             }
-            if (s.show_progress)
-                progress.tick();
+            const float n = static_cast<float>(s.spp);
+            image.at(i, j) = sum / n;
+            if (variance_of_mean && s.spp > 1) {
+                // Unbiased sample variance, then divided by n for the variance of the mean.
+                const color var = glm::max(sum_sq - sum * sum / n, color(0.0f)) / (n - 1.0f);
+                variance_of_mean->at(i, j) = var / n;
+            }
         }
-        flush_counters();
-    }
+        if (s.show_progress)
+            progress.tick();
+    }, flush_counters);
+    // --stats says how many threads drew the picture.
+    note_stat("threads", std::to_string(threads));
     return image;
 }
 

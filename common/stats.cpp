@@ -35,7 +35,15 @@ void reset_counters()
     totals = Counts{};
 }
 
-void note_stat(const std::string& key, const std::string& value) { notes.emplace_back(key, value); }
+void note_stat(const std::string& key, const std::string& value)
+{
+    for (auto& [k, v] : notes)
+        if (k == key) {
+            v = value;
+            return;
+        }
+    notes.emplace_back(key, value);
+}
 
 std::uint64_t total_rays(const Counts& counts)
 {

@@ -83,7 +83,8 @@ private:
 };
 
 // A line a program adds to its --stats beyond the counters (what a scene file's reader skipped, say):
-// printed as key=value after rays_per_second, by both printers below.
+// printed as key=value after rays_per_second, by both printers below. A key noted again keeps its
+// last value.
 void note_stat(const std::string& key, const std::string& value);
 
 // The `--stats` format: one key=value per line, counters first, then seconds and rays_per_second.

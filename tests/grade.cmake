@@ -3,12 +3,18 @@
 #
 # Called by the `grade` test of the grade preset, and by grade_batch.cmake once per submission:
 #   cmake -D BUILD_DIR=... -D CHAPTERS="01|02" -D REPORT=.../grade_report -D SOURCE_DIR=<the kit>
-#         -D EXERCISES_DIR=<the submission> -P grade.cmake
+#         -D EXERCISES_DIR=<the submission> -D GRADERS_DIR=<where grade_NN is built> [-D CONFIG=Release]
+#         -P grade.cmake
+# (CONFIG: the configuration to build with a multi-configuration generator, as Visual Studio's.)
 # with the environment variables RT_GRADEBOOK=file.csv and RT_STUDENT=name set, it also appends
 # the student's row to that gradebook.
 # A chapter that does not compile scores 0 and shows the compiler's first lines; a case that loops
 # forever or crashes loses its own points only.
 string(REPLACE "|" ";" chapters "${CHAPTERS}")
+set(config "")
+if(CONFIG)
+  set(config --config "${CONFIG}")
+endif()
 message(STATUS "==== grading the exercises in ${EXERCISES_DIR}")
 set(out "${BUILD_DIR}/grade-results")
 file(MAKE_DIRECTORY "${out}")
@@ -17,7 +23,7 @@ foreach(nn IN LISTS chapters)
   set(result "${out}/${nn}.results")
   file(REMOVE "${result}")
   message(STATUS "---- chapter ${nn}: building")
-  execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --target grade_${nn}
+  execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" ${config} --target grade_${nn}
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
     # Keep the compiler's errors, one line each, for the student's report.
@@ -30,14 +36,14 @@ foreach(nn IN LISTS chapters)
     string(REPLACE "${SOURCE_DIR}/" "" errors "${errors}")
     # Every case of the chapter at 0, listed by a grader linked with the kit's own stubs, so the
     # maximum stays whole; then the line that says why.
-    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --target cases_${nn} OUTPUT_QUIET ERROR_QUIET)
-    execute_process(COMMAND "${BUILD_DIR}/tests/cases_${nn}" --list-cases "${result}" OUTPUT_QUIET ERROR_QUIET)
+    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" ${config} --target cases_${nn} OUTPUT_QUIET ERROR_QUIET)
+    execute_process(COMMAND "${GRADERS_DIR}/cases_${nn}" --list-cases "${result}" OUTPUT_QUIET ERROR_QUIET)
     file(APPEND "${result}" "${nn}.build\t0\t0\tchapter ${nn}'s exercise file does not compile (or is missing), so every case of the chapter scores 0. The compiler's first errors:\t${errors}\n")
     message(STATUS "chapter ${nn} does not compile:\n${log}")
   else()
     message(STATUS "---- chapter ${nn}: grading")
     # Each case in its own process, ten seconds at most: the solutions need well under one.
-    execute_process(COMMAND "${BUILD_DIR}/tests/grade_${nn}" --results "${result}" --artifacts "${out}/pictures"
+    execute_process(COMMAND "${GRADERS_DIR}/grade_${nn}" --results "${result}" --artifacts "${out}/pictures"
       --case-timeout 10)
   endif()
   list(APPEND results "${result}")

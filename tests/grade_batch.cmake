@@ -4,7 +4,8 @@
 #   cmake -D SUBMISSIONS=/path/to/class -P tests/grade_batch.cmake
 #
 # Optional: -D BUILD_DIR=... (default build/batch), -D GRADEBOOK=... (default BUILD_DIR/gradebook.csv),
-# -D CHAPTERS="01;02" (default: every chapter).
+# -D CHAPTERS="01;02" (default: every chapter), -D GENERATOR="Visual Studio 17 2022" (default: Ninja
+# where it is installed, else CMake's default for the platform).
 # One build folder serves every student: switching RT_EXERCISES_DIR rebuilds only the exercises.
 # A student whose chapter is missing or does not compile scores 0 there, with every case of that
 # chapter listed; the batch goes on, printing each student's total as it goes.
@@ -21,6 +22,17 @@ if(NOT GRADEBOOK)
   set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
 endif()
 file(REMOVE "${GRADEBOOK}")
+# Any generator serves: Ninja where there is one, else the platform's (make, or Visual Studio, which
+# builds several configurations: hence --config and -C below).
+set(generator "")
+if(GENERATOR)
+  set(generator -G "${GENERATOR}")
+elseif(NOT EXISTS "${BUILD_DIR}/CMakeCache.txt")
+  find_program(ninja NAMES ninja ninja-build)
+  if(ninja)
+    set(generator -G Ninja)
+  endif()
+endif()
 set(class_rows "")
 file(GLOB entries LIST_DIRECTORIES true "${SUBMISSIONS}/*")
 list(SORT entries)
@@ -30,11 +42,11 @@ foreach(entry IN LISTS entries)
   endif()
   get_filename_component(student "${entry}" NAME)
   message(STATUS "==== ${student}")
-  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" -G Ninja
+  execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" ${generator}
       -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${entry}" "-D RT_GRADE_CHAPTERS=${CHAPTERS}"
     RESULT_VARIABLE rc OUTPUT_QUIET)
   if(rc EQUAL 0)
-    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --target grade_report RESULT_VARIABLE rc)
+    execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --config Release --target grade_report RESULT_VARIABLE rc)
   endif()
   if(NOT rc EQUAL 0)
     # Not this student's doing (their chapters build one by one when graded): say so, go on.
@@ -43,7 +55,7 @@ foreach(entry IN LISTS entries)
   endif()
   set(ENV{RT_GRADEBOOK} "${GRADEBOOK}")
   set(ENV{RT_STUDENT} "${student}")
-  execute_process(COMMAND ctest --test-dir "${BUILD_DIR}" -R "^grade$" --output-on-failure -V
+  execute_process(COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${BUILD_DIR}" -C Release -R "^grade$" --output-on-failure -V
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   string(REGEX MATCH "total +[0-9]+ / [0-9]+" total "${log}")
   if(NOT rc EQUAL 0 OR NOT total)

@@ -211,9 +211,10 @@ rt_expect_exit(04_shadow_feelers.classic_corner_rays 04_shadow_feelers 0 "^eye_r
 
 # From chapter 07 on: an accelerator renders brute force's picture, byte for byte, with brute force's
 # rays, in the chapter modes and by the classic rules, on the kit's scenes and generated ones.
-# rt_same_render(<name> <program> FIRST <options> SECOND <options> ARGS <options> [GENERATE <nff_generate args>])
+# rt_same_render(<name> <program> FIRST <options> SECOND <options> ARGS <options> [GENERATE <nff_generate args>]
+#                [EXPECT <regex the second run's --stats match>])
 function(rt_same_render name program)
-  cmake_parse_arguments(PARSE_ARGV 2 arg "" "" "FIRST;SECOND;ARGS;GENERATE")
+  cmake_parse_arguments(PARSE_ARGV 2 arg "" "EXPECT" "FIRST;SECOND;ARGS;GENERATE")
   string(JOIN "|" first ${arg_FIRST})
   string(JOIN "|" second ${arg_SECOND})
   string(JOIN "|" args ${arg_ARGS})
@@ -224,7 +225,7 @@ function(rt_same_render name program)
   endif()
   add_test(NAME programs.${name}
     COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:${program}>" -D "ARGS=${args}" -D "FIRST=${first}"
-      -D "SECOND=${second}" -D "OUT=${CMAKE_CURRENT_BINARY_DIR}/programs/${name}" ${generator}
+      -D "SECOND=${second}" -D "OUT=${CMAKE_CURRENT_BINARY_DIR}/programs/${name}" ${generator} -D "EXPECT=${arg_EXPECT}"
       -P "${CMAKE_CURRENT_SOURCE_DIR}/same_render.cmake")
   set_tests_properties(programs.${name} PROPERTIES LABELS "programs")
 endfunction()
@@ -244,7 +245,11 @@ foreach(generated "sphereflake;2" "pyramid;3" "tree;3" "mountain;4")
   rt_same_render(07_uniform_grid.grid_as_brute_classic_${kind}${depth} 07_uniform_grid FIRST --accel brute
     SECOND --accel grid --lambda 4 ARGS --width 64 --classic GENERATE ${kind} --depth ${depth})
 endforeach()
-rt_same_render(07_uniform_grid.figure_threads 07_uniform_grid FIRST --threads 1 SECOND --threads 2 ARGS --width 80 --height 45)
+# Two threads, with or without OpenMP (the kit's loop is std::thread): two drew the picture, the same one.
+rt_same_render(07_uniform_grid.figure_threads 07_uniform_grid FIRST --threads 1 SECOND --threads 2 ARGS --width 80 --height 45
+  EXPECT "\nthreads=2\n")
+rt_same_render(01_ray_casting.figure_threads 01_ray_casting FIRST --threads 1 SECOND --threads 2 ARGS --width 80 --height 45
+  EXPECT "\nthreads=2\n")
 rt_expect_exit(07_uniform_grid.figure_stats 07_uniform_grid 0
   "rays_primary=600\n.*accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\n.*references_per_object=[1-9]"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_stats.png")

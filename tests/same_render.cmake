@@ -3,7 +3,8 @@
 # or shadows): an accelerator must render brute force's image with brute force's rays.
 #   cmake -D PROGRAM=... -D ARGS="a|b" -D FIRST="--accel|brute" -D SECOND="--accel|grid" -D OUT=prefix
 #         [-D GENERATOR=nff_generate -D GENERATE="mountain|--depth|3"] -P same_render.cmake
-# With GENERATOR, the scene is written first to OUT.nff and given as --scene.
+# With GENERATOR, the scene is written first to OUT.nff and given as --scene. With EXPECT, the
+# second run's --stats must match that regular expression too ("threads=2\n").
 string(REPLACE "|" ";" args "${ARGS}")
 string(REPLACE "|" ";" first "${FIRST}")
 string(REPLACE "|" ";" second "${SECOND}")
@@ -24,7 +25,11 @@ foreach(run first second)
   endif()
   string(REGEX MATCHALL "(rays(_primary|_shadow|_reflected|_refracted)?|eye_[a-z]+|[a-z]+_rays|shadow_blocked|secondary_hits)=[0-9]+\n" lines "${out}")
   set(counts_${run} "${lines}")
+  set(output_${run} "${out}")
 endforeach()
+if(EXPECT AND NOT output_second MATCHES "${EXPECT}")
+  message(FATAL_ERROR "${PROGRAM} ${args} ${second}: its --stats do not match '${EXPECT}':\n${output_second}")
+endif()
 if(NOT counts_first STREQUAL counts_second)
   message(FATAL_ERROR "the two runs counted different rays:\n  ${FIRST}: ${counts_first}\n  ${SECOND}: ${counts_second}")
 endif()

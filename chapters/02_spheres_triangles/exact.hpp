@@ -13,6 +13,7 @@
 #include "common/ray.hpp"
 
 #include <cmath>
+#include <initializer_list>
 
 namespace rt::exact {
 

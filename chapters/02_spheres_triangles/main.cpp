@@ -76,7 +76,7 @@ void measure(const Options& o, const std::string& group, const std::vector<std::
     for (const auto& [case_name, make] : cases) {
         const Probes probes = make();
         for (const auto& [name, test] : tests) {
-            const double seconds = median_seconds(o.repeat, [&] { extremes::run(probes, test, answers); });
+            const double seconds = median_seconds(o.repeat, [&, &test = test] { extremes::run(probes, test, answers); });
             rows.push_back({group, case_name, name, precision_name<T>(), seconds, extremes::tests_in(probes),
                             extremes::score(probes, answers)});
         }

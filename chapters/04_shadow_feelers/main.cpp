@@ -111,7 +111,7 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
             std::cout << "| " << power_of_ten(scale) << " |";
             for (const auto& [name, offset] : offsets) {
                 Score score;
-                const double seconds = median_seconds(1, [&] { score = measure(scene, points, offset, c.side, 2); });
+                const double seconds = median_seconds(1, [&, &offset = offset] { score = measure(scene, points, offset, c.side, 2); });
                 std::cout << ' ' << percent(score.rehit_rate());
                 if (front)
                     std::cout << " / " << percent(score.missed_rate());

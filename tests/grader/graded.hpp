@@ -9,7 +9,7 @@
 #include "common/ray.hpp"
 #include "common/vec.hpp"
 
-#include <catch2/catch.hpp>
+#include "tests/grader/catch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,11 +8,21 @@
 //   --artifacts DIR       where picture tests write expected, actual and difference images
 //   --list-cases FILE     write every graded case at 0 points (a chapter that did not compile)
 //   --case-timeout S      with --results: run each graded case in its own process, stopped after S
-//                         seconds, so an endless loop or a crash in one case costs that case only
+//                         seconds of its own CPU time (or ten times that on the clock, whatever the
+//                         machine's load), so an endless loop or a crash in one case costs that case only
+//   --case-process S      (what the grader gives each case's process) run the one case named, append
+//                         its result to --results, and stop after S seconds of CPU time
+//
+// Catch2 v2 and v3 differ in the few interfaces a runner with a listener uses; RT_CATCH2_V3 picks.
+#ifdef RT_CATCH2_V3
+#include <catch2/catch_all.hpp>
+#else
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_EXTERNAL_INTERFACES
 #include <catch2/catch.hpp>
+#endif
 
+#include "tests/grader/child_process.hpp"
 #include "tests/grader/picture.hpp"
 #include "tests/grader/points.hpp"
 
@@ -20,15 +30,30 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
-#include <thread>
-
-#include <csignal>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace rt::grader {
 
 namespace {
+
+#ifdef RT_CATCH2_V3
+using ListenerBase = Catch::EventListenerBase;
+namespace clara = Catch::Clara;
+const Catch::TestCaseInfo& info_of(const Catch::TestCaseHandle& test) { return test.getTestCaseInfo(); }
+std::string text_of(const Catch::Tag& tag) { return std::string(tag.original); }
+#else
+using ListenerBase = Catch::TestEventListenerBase;
+namespace clara = Catch::clara;
+const Catch::TestCaseInfo& info_of(const Catch::TestCase& test) { return test; }
+const std::string& text_of(const std::string& tag) { return tag; }
+#endif
+
+// Exit status of a case's process stopped by its CPU limit (the `timeout` command's).
+constexpr int exit_cpu_limit = 124;
+
+// How long a case may take on the clock, as a multiple of its CPU limit: a backstop for a case that
+// sleeps or waits, generous enough that a correct case on a machine busy with ten times its work
+// still finishes.
+constexpr double wall_backstop_factor = 10.0;
 
 std::vector<CaseResult> results;
 std::string results_path;  // appended to after every case, so a crash still leaves the cases before it
@@ -38,7 +63,8 @@ void read_tags(const Catch::TestCaseInfo& info, CaseResult& r)
 {
     static const std::regex number_tag(R"(\d\d\.\w+)");
     static const std::regex points_tag(R"((\d+)pt)");
-    for (const std::string& tag : info.tags) {
+    for (const auto& t : info.tags) {
+        const std::string tag = text_of(t);
         std::smatch m;
         if (std::regex_match(tag, number_tag))
             r.number = tag;
@@ -47,9 +73,9 @@ void read_tags(const Catch::TestCaseInfo& info, CaseResult& r)
     }
 }
 
-class PointsListener : public Catch::TestEventListenerBase {
+class PointsListener : public ListenerBase {
 public:
-    using TestEventListenerBase::TestEventListenerBase;
+    using ListenerBase::ListenerBase;
 
     void testCaseStarting(const Catch::TestCaseInfo& info) override
     {
@@ -58,11 +84,21 @@ public:
         read_tags(info, current_);
     }
 
+#ifdef RT_CATCH2_V3
+    void assertionEnded(const Catch::AssertionStats& stats) override { record(stats); }
+#else
     bool assertionEnded(const Catch::AssertionStats& stats) override
+    {
+        record(stats);
+        return true;
+    }
+#endif
+
+    void record(const Catch::AssertionStats& stats)
     {
         const Catch::AssertionResult& a = stats.assertionResult;
         if (a.isOk())
-            return true;
+            return;
         std::ostringstream out;
         for (const Catch::MessageInfo& m : stats.infoMessages)
             out << m.message << '\n';
@@ -72,7 +108,6 @@ public:
             out << a.getMessage() << '\n';
         out << "  at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
         current_.output += out.str();
-        return true;
     }
 
     void testCaseEnded(const Catch::TestCaseStats& stats) override
@@ -105,11 +140,11 @@ std::vector<CaseResult> planned_cases(Catch::Session& session)
 {
     std::vector<CaseResult> plan;
     const Catch::Config& config = session.config();
-    for (const Catch::TestCase& test :
+    for (const auto& test :
          Catch::filterTests(Catch::getRegistryHub().getTestCaseRegistry().getAllTests(), config.testSpec(), config)) {
         CaseResult r;
-        r.name = test.name;
-        read_tags(test, r);
+        r.name = info_of(test).name;
+        read_tags(info_of(test), r);
         if (!r.number.empty())
             plan.push_back(r);
     }
@@ -138,32 +173,18 @@ size_t results_so_far()
     return got.size();
 }
 
-// Each case in a child process: the parent waits at most `timeout` seconds, then stops it and
-// records the case as lost, and records a case whose process died without reporting as crashed.
-void run_isolated(Catch::Session& session, int timeout)
+// Each case in a process of its own (this program again, given that case alone): it stops itself
+// after `cpu_limit` seconds of CPU time, and the grader stops it after ten times that on the clock.
+// A case whose process ended without reporting is recorded as crashed or stopped.
+void run_isolated(Catch::Session& session, const std::string& program, int cpu_limit)
 {
     for (const CaseResult& planned : planned_cases(session)) {
         const size_t before = results_so_far();
         std::cout.flush();
-        const pid_t pid = fork();
-        if (pid == 0) {
-            Catch::ConfigData data = session.configData();
-            data.testsOrTags = {catch_literal(planned.name)};
-            data.outputFilename = "/dev/null";  // the parent prints the verdict; the student's own prints stay
-            session.useConfigData(data);
-            session.run();
-            std::cout.flush();
-            std::_Exit(0);
-        }
-        int status = 0;
-        bool finished = false;
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeout);
-        while (!(finished = waitpid(pid, &status, WNOHANG) == pid) && std::chrono::steady_clock::now() < deadline)
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        if (!finished) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-        }
+        const std::vector<std::string> args = {catch_literal(planned.name), "--out", null_device(),
+                                               "--results", results_path, "--artifacts", artifacts_dir,
+                                               "--case-process", std::to_string(cpu_limit)};
+        const ChildStatus status = run_child(program, args, wall_backstop_factor * cpu_limit);
         std::vector<CaseResult> got;
         read_results(results_path, got);
         if (got.size() > before) {
@@ -171,12 +192,30 @@ void run_isolated(Catch::Session& session, int timeout)
             continue;
         }
         CaseResult lost = planned;
-        if (!finished)
-            lost.output = "the case ran longer than " + std::to_string(timeout) + " seconds and was stopped: an endless loop?";
-        else if (WIFSIGNALED(status))
-            lost.output = "the case crashed (signal " + std::to_string(WTERMSIG(status)) + ") before it could report";
-        else
-            lost.output = "the case ended without reporting (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
+        const std::string limit = std::to_string(cpu_limit);
+        switch (status.end) {
+        case ChildStatus::End::exited:
+            lost.output = status.code == exit_cpu_limit
+                              ? "the case used more than " + limit + " s of CPU time and was stopped: an endless loop?"
+                              : "the case ended without reporting (exit status " + std::to_string(status.code) + ")";
+            break;
+        case ChildStatus::End::crashed:
+            lost.output = "the case crashed (" +
+#ifdef _WIN32
+                          std::string("exception code ") + std::to_string(static_cast<unsigned>(status.code)) +
+#else
+                          std::string("signal ") + std::to_string(status.code) +
+#endif
+                          ") before it could report";
+            break;
+        case ChildStatus::End::stopped:
+            lost.output = "the case was still running after " + std::to_string(static_cast<int>(wall_backstop_factor * cpu_limit)) +
+                          " s on the clock and was stopped: is it waiting for something?";
+            break;
+        case ChildStatus::End::not_started:
+            lost.output = "the grader could not start a process for the case (" + program + ")";
+            break;
+        }
         append_result(results_path, lost);
         print_case(std::cout, lost);
     }
@@ -194,15 +233,24 @@ int main(int argc, char* argv[])
     Catch::StringMaker<float>::precision = 9;  // so a tolerance like 2e-6 does not print as 0.0
     std::string expect, list_path;
     int case_timeout = 0;
-    using namespace Catch::clara;
+    double cpu_limit = 0.0;
+    using clara::Opt;
     session.cli(session.cli() |
                 Opt(results_path, "file")["--results"]("write the graded cases, one a line, to this file") |
                 Opt(expect, "full|zero|less")["--expect-score"]("check the grader itself: exit 0 when the score is as expected") |
                 Opt(artifacts_dir, "dir")["--artifacts"]("where failing picture tests write their images") |
-                Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this long") |
+                Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this much CPU time") |
+                Opt(cpu_limit, "seconds")["--case-process"]("(the grader's own) one case's process, stopped after this much CPU time") |
                 Opt(list_path, "file")["--list-cases"]("write every graded case at 0 points to this file, and run none"));
     if (const int rc = session.applyCommandLine(argc, argv); rc != 0)
         return rc;
+    if (cpu_limit > 0.0) {
+        // One case's process: its result goes to the file the grader reads, which holds the cases
+        // before it; the grader prints the verdict and the table.
+        limit_cpu_time(cpu_limit, exit_cpu_limit);
+        session.run();
+        return 0;
+    }
     if (!list_path.empty()) {
         // The cases of a chapter whose exercise file did not compile: each at 0 of its points.
         if (!write_results(list_path, planned_cases(session))) {
@@ -225,7 +273,7 @@ int main(int argc, char* argv[])
     }
     int failed = 0;
     if (case_timeout > 0)
-        run_isolated(session, case_timeout);
+        run_isolated(session, this_program(argv[0]), case_timeout);
     else
         failed = session.run();
 

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# CI job: the kit as Windows builds it, cross-compiled with Debian's mingw-w64: every program and
+# grader, then chapter 01's program and graders run under wine, where wine starts (the graders'
+# per-case processes are Windows processes there: CreateProcess, no fork).
+#
+# GLM, stb and Catch2 v2 are header-only: the build reads Debian's headers through a folder of
+# links, so that nothing else of /usr/include (Linux's C library) reaches the Windows compiler.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+kit=$(pwd)
+work="$kit/build/ci-windows"
+headers="$work/headers"
+mkdir -p "$headers"
+ln -sfn /usr/include/glm "$headers/glm"
+ln -sfn /usr/include/catch2 "$headers/catch2"
+
+cmake -S "$kit" -B "$work/build" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$kit/.ci/mingw-w64.cmake" -DCMAKE_BUILD_TYPE=Release \
+  -DRT_GLM_INCLUDE_DIR="$headers" -DRT_STB_INCLUDE_DIR=/usr/include/stb -DRT_CATCH2_INCLUDE_DIR="$headers" \
+  -DRT_CATCH2_MAJOR=2 >/dev/null
+cmake --build "$work/build" --target programs_and_graders
+
+wine=""
+for w in wine64 /usr/lib/wine/wine64 wine; do
+  if command -v "$w" >/dev/null 2>&1; then wine=$w; break; fi
+done
+if [ -z "$wine" ]; then
+  echo "windows: built; wine is not installed, so nothing was run"
+  exit 0
+fi
+export WINEDEBUG=-all WINEPREFIX="$work/wineprefix"
+b="$work/build"
+run() { echo "+ wine $*"; "$wine" "$@"; }
+run "$b/01_ray_casting.exe" --width 64 --height 36 --threads 2 --stats --out "$work/01.png"
+[ -s "$work/01.png" ] || { echo "windows: 01_ray_casting.exe wrote no picture" >&2; exit 1; }
+rm -rf "$work/grade"
+run "$b/tests/grade_01_solutions.exe" --expect-score full --case-timeout 60 --results "$work/grade/solutions.results" \
+  --artifacts "$work/grade/pictures"
+run "$b/tests/grade_01.exe" --expect-score zero --case-timeout 60 --results "$work/grade/stubs.results" \
+  --artifacts "$work/grade/pictures"

@@ -1,0 +1,64 @@
+# The kit's dependencies, found wherever a platform's package manager puts them (apt, dnf, Homebrew,
+# vcpkg, MSYS2): GLM and stb here, Catch2 in tests/. Never vendored. Each is looked for as its own
+# CMake package (or pkg-config file) first, then by its headers on the usual paths and
+# CMAKE_PREFIX_PATH; a cache variable names the folder where neither finds it.
+
+# GLM: header-only. Its package (glmConfig.cmake) where one is installed, else glm/glm.hpp.
+find_package(glm CONFIG QUIET)
+if(NOT TARGET glm::glm)
+  find_path(RT_GLM_INCLUDE_DIR glm/glm.hpp DOC "The folder holding glm/glm.hpp")
+  if(NOT RT_GLM_INCLUDE_DIR)
+    message(FATAL_ERROR "GLM not found: install it (libglm-dev, glm-devel, brew install glm, vcpkg install glm) "
+      "or give -DRT_GLM_INCLUDE_DIR=/folder/holding/glm")
+  endif()
+  add_library(glm::glm INTERFACE IMPORTED)
+  set_target_properties(glm::glm PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${RT_GLM_INCLUDE_DIR}")
+endif()
+
+# stb: header-only too, and packaged in two layouts: Debian and Fedora put the headers in
+# include/stb/ with a pkg-config file (whose -I names that folder), vcpkg puts them flat in include/
+# with none. The kit includes them flat (<stb_image.h>) from the folder that holds them, and compiles
+# their implementation itself (rt_stb), so nothing links against a distribution's compiled stb.
+find_package(PkgConfig QUIET)
+if(PKG_CONFIG_FOUND)
+  pkg_check_modules(RT_STB_PC QUIET stb)
+endif()
+find_path(RT_STB_INCLUDE_DIR stb_image.h HINTS ${RT_STB_PC_INCLUDE_DIRS} PATH_SUFFIXES stb
+  DOC "The folder holding stb_image.h")
+if(NOT RT_STB_INCLUDE_DIR)
+  message(FATAL_ERROR "stb not found: install it (libstb-dev, stb-devel, vcpkg install stb, pacman -S "
+    "mingw-w64-x86_64-stb) or give -DRT_STB_INCLUDE_DIR=/folder/holding/stb_image.h")
+endif()
+foreach(header stb_image_write.h stb_easy_font.h)
+  if(NOT EXISTS "${RT_STB_INCLUDE_DIR}/${header}")
+    message(FATAL_ERROR "${RT_STB_INCLUDE_DIR} holds stb_image.h but not ${header}: the kit needs both")
+  endif()
+endforeach()
+if(RT_STB_PC_FOUND)
+  message(STATUS "stb: ${RT_STB_INCLUDE_DIR} (pkg-config)")
+else()
+  message(STATUS "stb: ${RT_STB_INCLUDE_DIR} (its headers; no pkg-config file)")
+endif()
+
+# Floating-point std::from_chars: libstdc++ (GCC 11+) and MSVC have it, libc++ before LLVM 20 does
+# not; the NFF reader then checks the same grammar itself (common/number.cpp).
+include(CheckCXXSourceCompiles)
+set(CMAKE_REQUIRED_FLAGS "${CMAKE_CXX_FLAGS}")
+check_cxx_source_compiles([[
+#include <charconv>
+int main() { double v; const char t[] = "1.5"; return std::from_chars(t, t + 3, v).ec == std::errc() ? 0 : 1; }
+]] RT_HAVE_FLOAT_FROM_CHARS)
+unset(CMAKE_REQUIRED_FLAGS)
+
+# Warnings: GCC's and clang's -Wall -Wextra, MSVC's /W4 (and UTF-8 sources, conforming mode).
+if(MSVC)
+  set(RT_WARNING_FLAGS /W4 /utf-8 /permissive-)
+  # A stub's parameters are unused until the student writes the answer.
+  set(RT_NO_UNUSED_PARAMETER_WARNING /wd4100)
+else()
+  set(RT_WARNING_FLAGS -Wall -Wextra)
+  set(RT_NO_UNUSED_PARAMETER_WARNING -Wno-unused-parameter)
+endif()
+
+# Threads: the kit's parallel loop is std::thread (common/parallel.hpp), OpenMP or not.
+find_package(Threads REQUIRED)

@@ -1,0 +1,24 @@
+#include "common/parallel.hpp"
+
+#include <iostream>
+
+namespace rt {
+
+int resolve_threads(int requested)
+{
+    if (requested > 0)
+        return requested;
+    // hardware_concurrency() may answer 0 where the system does not say.
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void warn_threads_started(int requested, int started)
+{
+    static std::once_flag once;
+    std::call_once(once, [&] {
+        std::cerr << "asked for " << requested << " threads, but the system started only " << started
+                  << ": rendering on " << started << " (the picture is the same)\n";
+    });
+}
+
+}  // namespace rt
