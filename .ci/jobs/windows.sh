@@ -28,12 +28,12 @@ if [ -z "$wine" ]; then
   exit 0
 fi
 export WINEDEBUG=-all WINEPREFIX="$work/wineprefix"
-b="$work/build"
+# Relative paths: the Windows build's command line reads a leading '/' as an option's.
+cd "$work"
 run() { echo "+ wine $*"; "$wine" "$@"; }
-run "$b/01_ray_casting.exe" --width 64 --height 36 --threads 2 --stats --out "$work/01.png"
-[ -s "$work/01.png" ] || { echo "windows: 01_ray_casting.exe wrote no picture" >&2; exit 1; }
-rm -rf "$work/grade"
-run "$b/tests/grade_01_solutions.exe" --expect-score full --case-timeout 60 --results "$work/grade/solutions.results" \
-  --artifacts "$work/grade/pictures"
-run "$b/tests/grade_01.exe" --expect-score zero --case-timeout 60 --results "$work/grade/stubs.results" \
-  --artifacts "$work/grade/pictures"
+run build/01_ray_casting.exe --width 64 --height 36 --threads 2 --stats --out 01.png
+[ -s 01.png ] || { echo "windows: 01_ray_casting.exe wrote no picture" >&2; exit 1; }
+rm -rf grade
+run build/tests/grade_01_solutions.exe --expect-score full --case-timeout 60 --results grade/solutions.results \
+  --artifacts grade/pictures
+run build/tests/grade_01.exe --expect-score zero --case-timeout 60 --results grade/stubs.results --artifacts grade/pictures

@@ -1,6 +1,7 @@
 #include "tests/grader/points.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -179,6 +180,11 @@ static void write_line(std::ostream& out, const CaseResult& r)
 
 bool write_results(const std::string& path, const std::vector<CaseResult>& results)
 {
+    // A results file in a folder not made yet (--results grade/01.results) gets its folder.
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code ignored;
+    if (!parent.empty())
+        std::filesystem::create_directories(parent, ignored);
     std::ofstream out(path);
     for (const CaseResult& r : results)
         write_line(out, r);
