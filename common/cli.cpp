@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -204,6 +205,17 @@ int run_program(const std::string& program, const std::function<int()>& body)
     } catch (const InputError& e) {
         std::cerr << program << ": " << e.what() << '\n';
         return exit_bad_input;
+    } catch (const std::bad_alloc&) {
+        // Every structure counts its size before it allocates and keeps within its budget, so this
+        // is a machine with less memory than the scene and image need, not a crash to report.
+        std::cerr << program << ": out of memory: the scene, the image or the acceleration structure needs more "
+                     "memory than this machine has free\n";
+        return exit_bad_input;
+    } catch (const std::exception& e) {
+        // Anything else is the kit's own failure (a structure that disagrees with brute force, say):
+        // one line and its exit status, never an abort.
+        std::cerr << program << ": " << e.what() << " (a bug of the kit)\n";
+        return exit_kit_bug;
     }
 }
 

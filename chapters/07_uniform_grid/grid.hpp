@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <utility>
@@ -29,12 +30,64 @@ namespace rt {
 constexpr float grid_margin = 1e-5f;
 
 // Why 1 << 25 cells (32 Mi, 128 MB of offsets): a dense grid pays for every cell, empty or not;
-// past this the build would take seconds and most of the machine's memory for one scene.
+// past this the build would take seconds and most of the machine's memory for one scene. A lambda
+// that asks for more is refused: the number is the user's.
 constexpr long long max_grid_cells = 1LL << 25;
+
+// Why 2^26 references (256 MB of object numbers): the most a grid of this chapter's scenes lists
+// (a few per object, a few hundred for long thin ones) for scenes of up to millions of objects; past
+// it a build takes seconds and gigabytes.
+constexpr long long max_grid_references = 1LL << 26;
+
+// Whether a grid of `shape` holding `references` earns its keep over `objects` objects: a ray
+// crosses about (n_x + n_y + n_z) / 3 of its cells (chapter 10's hierarchy of grids weighs its
+// children the same way), each listing references / cells objects on average, and brute force
+// tests every object once. A grid whose walk would test more than that is sorting nothing apart:
+// objects as large as the scene (a thousand spheres at one point, or each around all the others)
+// are listed in every cell, the references grow as objects times cells (4e8 for 10,000 such spheres
+// at chapter 07's density), and a ray pays for the whole list in every cell it crosses.
+// Below grid_pays_floor tests a ray, brute force is cheap whatever a grid does: a scene of a few
+// objects keeps the grid it asks for.
+constexpr double grid_pays_floor = 64.0;
+
+inline bool grid_pays(const GridShape& shape, long long references, long long objects)
+{
+    const double crossed = (shape.n.x + shape.n.y + shape.n.z) / 3.0;
+    const double tests = crossed * static_cast<double>(references) / static_cast<double>(shape.cell_count());
+    return references <= max_grid_references && tests <= std::max(grid_pays_floor, static_cast<double>(objects));
+}
+
+// Why 2^-20 of the largest extent: an axis that thin is a flat scene's thickness (its objects' boxes
+// widened by a float step each way), not room for cells.
+constexpr float flat_thickness = 0x1p-20f;
+
+// The box the cube-root rule (07.1) is given: the scene's, with an axis thinner than flat_thickness
+// made exactly flat, and scaled by a power of two (exact in float) so that its largest side lies in
+// [0.5, 1). The rule depends only on the box's proportions, but it multiplies the sides into a
+// volume in float: a flat scene at the coordinate 0 (a thickness of two denormals) or a scene 1e-15
+// across would underflow to a volume of 0 and ask for cells of size 0, one 1e13 across overflow.
+inline Bounds resolution_box(const Bounds& box)
+{
+    if (box.empty())
+        return box;
+    const vec3 e = box.extent();
+    const float largest = std::max({e.x, e.y, e.z});
+    if (!(largest > 0.0f) || !std::isfinite(largest))
+        return box;
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    const float scale = std::ldexp(1.0f, -exponent);
+    Bounds b{point3(0.0f), e * scale};
+    for (int a = 0; a < 3; ++a)
+        if (e[a] <= flat_thickness * largest)
+            b.max[a] = 0.0f;
+    return b;
+}
 
 // What the grid's build reports (--stats, the trade tables).
 struct GridStats {
     cell3 resolution{1};
+    float lambda = 0.0f;  // the lambda built with: the one asked for, or lower (plan_grid)
     long long cells = 0;
     long long references = 0;
     long long empty_cells = 0;
@@ -57,16 +110,61 @@ inline Bounds grown(const Bounds& b, float margin)
     return {b.min - vec3(margin), b.max + vec3(margin)};
 }
 
-// Lists the objects `ids` (in increasing number) in the cells of grid.shape that their boxes,
-// grown by `margin`, overlap: a counting sort into grid.cell_start and grid.object_index.
+// The cells each object's box, grown by `margin`, overlaps (07.3), and how many references they make
+// in all: counted in 64 bits before anything is allocated.
+inline long long object_cell_ranges(const GridShape& shape, const Objects& objects, const std::vector<std::uint32_t>& ids,
+                                    float margin, std::vector<CellRange>& ranges)
+{
+    ranges.resize(ids.size());
+    long long references = 0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        ranges[i] = cells_overlapping(shape, grown(objects.bounds(static_cast<int>(ids[i])), margin));
+        const cell3 span = ranges[i].last - ranges[i].first + cell3(1);
+        references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
+    }
+    return references;
+}
+
+// A grid's shape chosen for the objects `ids` in `box` (their union, not yet grown), lambda cells
+// per object, with each object's cells: the shape the cube-root rule (07.1) gives, or, when that
+// grid would not pay (grid_pays), the one of the densest lower lambda that does. A scene that asks
+// for this is the scene's doing, not the user's: the build says so and goes on (say_lambda_lowered).
+struct GridPlan {
+    GridShape shape;
+    std::vector<CellRange> ranges;
+    long long references = 0;
+    float lambda = 0.0f;             // the lambda built with
+    long long asked_references = 0;  // at the lambda asked for, when it was lowered (else 0)
+    cell3 asked_resolution{1};
+};
+
+inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::vector<std::uint32_t>& ids, float lambda,
+                          float margin, int max_per_axis)
+{
+    const int count = static_cast<int>(ids.size());
+    GridPlan plan;
+    plan.lambda = lambda;
+    for (;;) {
+        const cell3 n = grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis);
+        plan.shape = grid_shape(count > 0 ? grown(box, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
+        plan.references = object_cell_ranges(plan.shape, objects, ids, margin, plan.ranges);
+        if (n == cell3(1) || grid_pays(plan.shape, plan.references, count))
+            return plan;
+        if (plan.asked_references == 0) {
+            plan.asked_references = plan.references;
+            plan.asked_resolution = n;
+        }
+        plan.lambda *= 0.5f;  // each try costs one pass over the objects: a few dozen at most
+    }
+}
+
+// Lists the objects `ids` (in increasing number) in the cells of grid.shape given by `ranges` (one
+// per object, from object_cell_ranges): a counting sort into grid.cell_start and grid.object_index.
 // Chapter 10's hierarchy of grids lists a cell's objects in its child grid the same way.
-inline void list_objects(Grid& grid, const Objects& objects, const std::vector<std::uint32_t>& ids, float margin)
+inline void list_objects(Grid& grid, const std::vector<std::uint32_t>& ids, const std::vector<CellRange>& ranges)
 {
     const GridShape& shape = grid.shape;
     const int cell_count = shape.cell_count();
-    std::vector<CellRange> ranges(ids.size());
-    for (std::size_t i = 0; i < ids.size(); ++i)
-        ranges[i] = cells_overlapping(shape, grown(objects.bounds(static_cast<int>(ids[i])), margin));
     const auto for_each_cell = [&](const CellRange& r, auto&& visit) {
         for (int i = r.first.x; i <= r.last.x; ++i)
             for (int j = r.first.y; j <= r.last.y; ++j)
@@ -89,8 +187,22 @@ inline void list_objects(Grid& grid, const Objects& objects, const std::vector<s
         for_each_cell(ranges[i], [&](int p) { grid.object_index[fill[p]++] = ids[i]; });
 }
 
-// Builds the grid over every object, lambda cells per object. Throws InputError when the
-// resolution would pass max_grid_cells.
+// The line a build says when the scene made it lower lambda.
+inline void say_lambda_lowered(const char* structure, const GridPlan& plan, float asked, int objects)
+{
+    if (plan.asked_references == 0)
+        return;
+    std::fprintf(stderr,
+                 "%s: at lambda %g (%d x %d x %d cells) its %d objects would be listed %lld times, %.0f each: their boxes "
+                 "overlap too much for cells to sort them apart, and a ray would test more objects than brute force; "
+                 "built at lambda %g instead (%d x %d x %d cells)\n",
+                 structure, static_cast<double>(asked), plan.asked_resolution.x, plan.asked_resolution.y,
+                 plan.asked_resolution.z, objects, plan.asked_references,
+                 static_cast<double>(plan.asked_references) / std::max(1, objects), static_cast<double>(plan.lambda),
+                 plan.shape.n.x, plan.shape.n.y, plan.shape.n.z);
+}
+
+// Builds the grid over every object, lambda cells per object (lowered where it would not pay). Throws InputError when the resolution asked for would pass max_grid_cells.
 inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = nullptr)
 {
     const Timer timer;
@@ -99,7 +211,7 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
     for (int k = 0; k < count; ++k)
         scene.grow(objects.bounds(k));
     Grid grid;
-    const cell3 n = grid_resolution(scene, count, lambda);
+    const cell3 n = grid_resolution(resolution_box(scene), count, lambda);
     const long long cells = static_cast<long long>(n.x) * n.y * n.z;
     if (cells > max_grid_cells)
         throw InputError("a grid of " + std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z) +
@@ -107,14 +219,17 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
                          " objects) passes the limit of " + std::to_string(max_grid_cells) +
                          " cells: choose a smaller lambda");
     const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
-    grid.shape = grid_shape(count > 0 ? grown(scene, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
-    list_objects(grid, objects, all, margin);
+    const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_cells_per_axis);
+    say_lambda_lowered("the grid", plan, lambda, count);
+    grid.shape = plan.shape;
+    list_objects(grid, all, plan.ranges);
     const int cell_count = grid.shape.cell_count();
 
     if (stats) {
-        stats->resolution = n;
+        stats->resolution = grid.shape.n;
+        stats->lambda = plan.lambda;
         stats->cells = cell_count;
         stats->references = static_cast<long long>(grid.object_index.size());
         stats->empty_cells = 0;

@@ -15,18 +15,15 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <vector>
 
 namespace rt {
 
-// Why 2^27 references (1 GB of sort keys at most): a fine grid lists a large object in every cell
-// its box reaches, and a resolution too fine for a scene's big objects would take the build past
-// the machine's memory; such a build is refused, naming the count.
-constexpr long long max_hashed_references = 1LL << 27;
-
 struct HashedGridStats {
     cell3 resolution{1};
+    float lambda = 0.0f;       // the lambda built with: the one asked for, or lower (plan_grid)
     long long cells = 0;       // of the whole grid, empty or not
     long long occupied = 0;    // cells that hold an object: the table's entries
     long long references = 0;  // (cell, object) pairs
@@ -136,27 +133,24 @@ private:
         Bounds scene;
         for (int k = 0; k < count; ++k)
             scene.grow(objects.bounds(k));
-        const cell3 n = grid_resolution(scene, count, lambda, max_hashed_cells_per_axis);
-        const long long cells = static_cast<long long>(n.x) * n.y * n.z;
-        if (cells >= (1LL << 31))
-            throw InputError("a hashed grid of " + std::to_string(n.x) + " x " + std::to_string(n.y) + " x " +
-                             std::to_string(n.z) + " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
+        const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
+        if (static_cast<long long>(asked.x) * asked.y * asked.z >= (1LL << 31))
+            throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
+                             std::to_string(asked.z) + " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
         const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
-        shape_ = grid_shape(count > 0 ? grown(scene, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
+        std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
+        std::iota(all.begin(), all.end(), 0u);
+        // The references are counted before anything is allocated; where such a grid would not pay
+        // (chapter 07's grid_pays), lambda is lowered (plan_grid).
+        const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_hashed_cells_per_axis);
+        say_lambda_lowered("the hashed grid", plan, lambda, count);
+        shape_ = plan.shape;
+        const cell3 n = shape_.n;
+        const long long cells = static_cast<long long>(n.x) * n.y * n.z;
+        const std::vector<CellRange>& ranges = plan.ranges;
+        const long long references = plan.references;
 
         // Every (cell, object) reference as one 64-bit key, cell above object, sorted.
-        std::vector<CellRange> ranges(static_cast<std::size_t>(count));
-        long long references = 0;
-        for (int k = 0; k < count; ++k) {
-            ranges[k] = cells_overlapping(shape_, grown(objects.bounds(k), margin));
-            const cell3 span = ranges[k].last - ranges[k].first + cell3(1);
-            references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
-        }
-        if (references > max_hashed_references)
-            throw InputError("a hashed grid of " + std::to_string(n.x) + " x " + std::to_string(n.y) + " x " +
-                             std::to_string(n.z) + " cells would list " + std::to_string(references) +
-                             " (cell, object) references, past the limit of " + std::to_string(max_hashed_references) +
-                             ": choose a smaller lambda");
         std::vector<std::uint64_t> keys;
         keys.reserve(static_cast<std::size_t>(references));
         for (int k = 0; k < count; ++k)
@@ -201,6 +195,7 @@ private:
             bits_.words[static_cast<std::uint32_t>(c.p) >> 6] |= std::uint64_t{1} << (static_cast<std::uint32_t>(c.p) & 63u);
 
         stats_.resolution = n;
+        stats_.lambda = plan.lambda;
         stats_.cells = cells;
         stats_.occupied = static_cast<long long>(by_address.size());
         stats_.references = static_cast<long long>(table_.object_index.size());

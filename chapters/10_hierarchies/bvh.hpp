@@ -7,6 +7,7 @@
 // laid out depth first in one array, a node's first child right after it.
 #pragma once
 
+#include "07_uniform_grid/grid.hpp"
 #include "10_hierarchies/10_hierarchies.hpp"
 #include "common/error.hpp"
 #include "common/stats.hpp"
@@ -72,8 +73,16 @@ private:
         const int n = objects.size();
         boxes_.resize(static_cast<std::size_t>(n));
         centres_.resize(static_cast<std::size_t>(n));
+        // Each box grown by chapter 07's margin (grid_margin_of): a hit's t carries its test's
+        // rounding, which can put the hit point a little outside the object's own box (a ray leaving
+        // a plane at a grazing angle, a triangle far larger than its distance from the ray's origin);
+        // brute force reports such a hit, and the BVH must find it too.
+        Bounds scene;
+        for (int k = 0; k < n; ++k)
+            scene.grow(objects.bounds(k));
+        const float margin = n > 0 ? grid_margin_of(scene) : 0.0f;
         for (int k = 0; k < n; ++k) {
-            boxes_[k] = objects.bounds(k);
+            boxes_[k] = grown(objects.bounds(k), margin);
             centres_[k] = boxes_[k].centre();
         }
         bvh_.object_index.resize(static_cast<std::size_t>(n));

@@ -26,6 +26,7 @@ struct HGridSettings {
 
 struct HGridStats {
     int grids = 0, depth = 0;
+    int children_over_budget = 0;  // crowded cells left without a grid: it would pass the budgets
     long long cells = 0, references = 0;
     std::size_t bytes = 0;
     double build_seconds = 0.0;
@@ -46,6 +47,7 @@ public:
             scene.grow(objects.bounds(k));
         margin_ = objects.size() > 0 ? grid_margin_of(scene) : 0.0f;
         cells_ = h_.grids[0].grid.shape.cell_count();
+        references_ = static_cast<long long>(h_.grids[0].grid.object_index.size());
         subdivide(objects, 0, 0);
         for (const GridNode& node : h_.grids) {
             stats_.cells += node.grid.shape.cell_count();
@@ -101,22 +103,27 @@ private:
                 separable += !covers(objects.bounds(static_cast<int>(h_.grids[g].grid.object_index[i])), cell);
             if (separable <= settings_.leaf_size)
                 continue;
-            const cell3 n = grid_resolution(cell, count, settings_.lambda);
+            const cell3 n = grid_resolution(resolution_box(cell), count, settings_.lambda);
             if (n == cell3(1))
                 continue;  // one cell again: nothing gained
             const GridShape child_shape = grid_shape(grown(cell, margin_), n);
             const std::vector<std::uint32_t> ids(h_.grids[g].grid.object_index.begin() + begin,
                                                  h_.grids[g].grid.object_index.begin() + end);
-            if (!separates(child_shape, objects, ids))
+            std::vector<CellRange> ranges;
+            const long long references = object_cell_ranges(child_shape, objects, ids, margin_, ranges);
+            if (!separates(child_shape, references, ids.size()))
                 continue;
+            // Past the budgets of chapter 07's grid, counted over every level, the cell keeps its list:
+            // a coarser hierarchy, never a refused or swollen one.
+            if (cells_ + child_shape.cell_count() > max_grid_cells || references_ + references > max_grid_references) {
+                ++stats_.children_over_budget;
+                continue;
+            }
             cells_ += child_shape.cell_count();
-            if (cells_ > max_grid_cells)
-                throw InputError("the hierarchy of grids passes the limit of " + std::to_string(max_grid_cells) +
-                                 " cells (lambda " + std::to_string(settings_.lambda) + ", depth limit " +
-                                 std::to_string(settings_.max_depth) + "): choose a smaller lambda or depth limit");
+            references_ += references;
             GridNode node;
             node.grid.shape = child_shape;
-            list_objects(node.grid, objects, ids, margin_);
+            list_objects(node.grid, ids, ranges);
             node.child.assign(static_cast<std::size_t>(node.grid.shape.cell_count()), -1);
             const int number = static_cast<int>(h_.grids.size());
             h_.grids.push_back(std::move(node));
@@ -134,16 +141,10 @@ private:
     // larger than the child's cells (long sticks across it) are listed in most of them: such a grid
     // would be walked for nothing, and subdivided again, each level multiplying the references.
     // Counted from the objects' cell ranges, before anything is listed.
-    bool separates(const GridShape& child, const Objects& objects, const std::vector<std::uint32_t>& ids) const
+    static bool separates(const GridShape& child, long long references, std::size_t objects)
     {
-        double references = 0.0;
-        for (const std::uint32_t k : ids) {
-            const CellRange r = cells_overlapping(child, grown(objects.bounds(static_cast<int>(k)), margin_));
-            references += static_cast<double>(r.last.x - r.first.x + 1) * (r.last.y - r.first.y + 1) *
-                          (r.last.z - r.first.z + 1);
-        }
         const double crossed = (child.n.x + child.n.y + child.n.z) / 3.0;
-        return crossed * references / child.cell_count() < static_cast<double>(ids.size());
+        return crossed * static_cast<double>(references) / child.cell_count() < static_cast<double>(objects);
     }
 
     static bool covers(const Bounds& b, const Bounds& cell)
@@ -180,7 +181,7 @@ private:
     HGrid h_;
     HGridStats stats_;
     float margin_ = 0.0f;
-    long long cells_ = 0;
+    long long cells_ = 0, references_ = 0;  // over every level, for the budgets
 };
 
 }  // namespace rt

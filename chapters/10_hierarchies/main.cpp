@@ -249,6 +249,8 @@ int main(int argc, char** argv)
         if (o.accel != "bvh" && o.accel != "hgrid" && (cli.given("--leaf-size") || cli.given("--max-depth")))
             throw InputError("--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to "
                              "--accel bvh or hgrid only");
+        if ((o.accel == "bvh" || o.accel == "brute") && cli.given("--lambda"))
+            throw InputError("--lambda sets a grid's density; it applies to --accel grid, hgrid or hashed only");
         if (o.accel == "hgrid" && o.max_depth > HGridAccel::max_hgrid_depth)
             throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
                              std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.max_depth));

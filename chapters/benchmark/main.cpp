@@ -294,15 +294,14 @@ void bench_scene(const Scene& sc, const Options& o, std::vector<Row>& rows, std:
                 const double wanted = pass_budget_seconds / std::max(per_ray, 1e-12);
                 if (static_cast<double>(which.size()) > 4.0 * wanted)
                     which = strided(set.rays.size(), static_cast<size_t>(static_cast<double>(set.rays.size()) / wanted));
-                // A pass shorter than the budget is repeated within one timing (after one untimed
-                // warm-up pass), so that each timing is long enough to measure.
-                const double expected = per_ray * static_cast<double>(which.size()) / threads;
-                // (Not in --tiny, a check: there a pass is microseconds, and thousands of parallel
-                // passes on a loaded machine would only measure its scheduler.)
-                const int loops = o.tiny ? 1
-                                         : std::max(1, static_cast<int>(std::ceil(pass_budget_seconds / std::max(expected, 1e-9))));
+                // A pass shorter than the budget is repeated within one timing, as many times as the
+                // untimed warm-up pass says fit in the budget: the warm-up's own time, thread starts
+                // included, so that a scene of one object (nanoseconds a ray) is not repeated a
+                // million times to measure the scheduler. (Not in --tiny, a check: one pass.)
                 const auto timed = [&](bool any_hit) {
-                    pass(*accel, set, objects, which, any_hit, threads);
+                    const double warm_up = pass(*accel, set, objects, which, any_hit, threads);
+                    const int loops =
+                        o.tiny ? 1 : static_cast<int>(std::clamp(std::ceil(pass_budget_seconds / std::max(warm_up, 1e-6)), 1.0, 1e4));
                     double seconds = 0.0;
                     for (int l = 0; l < loops; ++l)
                         seconds += pass(*accel, set, objects, which, any_hit, threads);

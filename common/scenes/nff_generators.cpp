@@ -341,8 +341,16 @@ void write_sticks(std::ostream& out, int depth)
     for (int c = 0; c < 3; ++c) {
         w.material(colours[c], 0.8, 0.2, 20.0);
         for (int k = c; k < count; k += 3) {
-            const dvec3 centre(2.0 * u() - 1.0, 0.05 + 0.95 * u(), 2.0 * u() - 1.0);
-            const dvec3 along = around(dvec3(0.0, 1.0, 0.0), 360.0 * u(), 60.0 * (2.0 * u() - 1.0));
+            // One draw a statement: the order in which a call's arguments are computed is the
+            // compiler's (GCC takes the last first, clang the first), and the scene must not depend
+            // on what compiled it. These are GCC's order, which drew the kit's figures.
+            const double z = 2.0 * u() - 1.0;
+            const double y = 0.05 + 0.95 * u();
+            const double x = 2.0 * u() - 1.0;
+            const double tilt = 60.0 * (2.0 * u() - 1.0);
+            const double turn = 360.0 * u();
+            const dvec3 centre(x, y, z);
+            const dvec3 along = around(dvec3(0.0, 1.0, 0.0), turn, tilt);
             dvec3 side, unused;
             basis(along, side, unused);
             const dvec3 a = centre - 0.5 * sticks_length * along, b = centre + 0.5 * sticks_length * along;

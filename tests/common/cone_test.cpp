@@ -375,14 +375,19 @@ TEST_CASE("a cone 1e4 units away is still hit with an accurate t", "[common][con
         const double phi = uniform(rng, -1.0f, 1.0f);
         const double h = uniform(rng, 0.1f, 0.9f) * f.H;
         const dvec3 target = side_point(f, h, std::cos(phi) * u + std::sin(phi) * w);
-        const point3 eye(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+        // One draw a statement, last first, as GCC computes a call's arguments: the rays are the
+        // same whatever compiles the test.
+        const float ez = uniform(rng, -1, 1), ey = uniform(rng, -1, 1), ex = uniform(rng, -1, 1);
+        const point3 eye(ex, ey, ez);
         compare({eye, vec3(glm::normalize(target - dvec3(eye)))}, far, aimed);
         // Aimed anywhere within 2 units of the cone: hit or miss as the reference says.
         const point3 near = 0.5f * (far.base + far.apex) + 2.0f * random_unit(rng) * uniform(rng, 0, 1);
         compare({eye, glm::normalize(near - eye)}, far, around);
     }
-    INFO("aimed at the side facing the eye: " << aimed.hits << " of " << aimed.rays << " hit");
-    CHECK(aimed.hits == aimed.rays);
+    // Every ray aimed at the side hits it, but for those within rounding of an edge (ambiguous).
+    INFO("aimed at the side facing the eye: " << aimed.hits << " of " << aimed.rays << " hit, " << aimed.ambiguous
+                                              << " within rounding of an edge");
+    CHECK(aimed.hits + aimed.ambiguous == aimed.rays);
     check_agreement("aimed at the side facing the eye", aimed, 0.999);
     check_agreement("aimed within 2 units of the cone", around, 0.1);
 }

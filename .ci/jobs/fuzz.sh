@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# CI job: every libFuzzer target (tests/fuzz/README.md) builds with clang, and each runs briefly over
+# its corpus (RT_FUZZ_SECONDS each, 20 by default): a finding fails the job and leaves its input
+# under build/ci-fuzz/artifacts/.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+work=build/ci-fuzz
+seconds=${RT_FUZZ_SECONDS:-20}
+cmake -S . -B "$work/build" -G Ninja -DRT_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release >/dev/null
+targets=$(sed -n 's/^rt_add_fuzz_target(\([a-z_]*\).*/\1/p; s/^ *rt_add_fuzz_target(\([a-z_]*\).*/\1/p' tests/fuzz/CMakeLists.txt | sort -u)
+cmake --build "$work/build" --target $targets
+mkdir -p "$work/artifacts"
+for target in $targets; do
+  corpus=()
+  [ "$target" = polygon_fuzz ] || corpus=(tests/fuzz/corpus -dict=tests/fuzz/nff.dict)
+  rm -rf "$work/$target-work"
+  mkdir -p "$work/$target-work"
+  echo "+ $target for $seconds s"
+  "$work/build/tests/fuzz/$target" "$work/$target-work" "${corpus[@]}" -max_len=4096 -max_total_time="$seconds" \
+    -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/$target-" 2>&1 |
+    grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|==.*ERROR|SUMMARY)" || true
+  if ls "$work/artifacts/$target-"* >/dev/null 2>&1; then
+    echo "fuzz: $target found an input that breaks its contract: $(ls "$work/artifacts/$target-"*)" >&2
+    exit 1
+  fi
+done

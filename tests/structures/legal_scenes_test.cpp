@@ -1,0 +1,154 @@
+// Legal scenes that once broke a structure: objects all at one point, each around all the others,
+// scenes flat in a plane through the origin, tiny and single-object scenes. Every structure of
+// chapters 07-10 must build them within its budgets and answer every seeded ray as brute force does
+// (object and t), without testing many times more objects than brute force.
+#include "08_mailboxing/figure.hpp"
+#include "10_hierarchies/figure.hpp"
+#include "tests/ch07/agreement.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+struct Structure {
+    std::string name;
+    float lambda;
+    agreement::Build build;
+};
+
+std::vector<Structure> structures()
+{
+    return {
+        {"grid", ch07::default_lambda, [](const Objects& o, float l) { return ch07::make_accelerator("grid", o, l); }},
+        {"grid with mailboxes", ch07::default_lambda,
+         [](const Objects& o, float l) { return ch08::make_accelerator("grid", true, o, l); }},
+        {"hashed grid", ch09::default_hashed_lambda,
+         [](const Objects& o, float l) { return ch09::make_accelerator("hashed", o, l, 0); }},
+        {"hierarchy of grids", ch07::default_lambda,
+         [](const Objects& o, float l) { return std::make_unique<HGridAccel>(o, HGridSettings{l}); }},
+        {"BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<BvhAccel>(o, BvhSettings{}); }},
+    };
+}
+
+// Why 1 GB: the most a structure may take for a scene below 100k objects, whatever its shape.
+constexpr std::size_t max_bytes = std::size_t{1} << 30;
+
+// Why 3 times: a structure may cost more than brute force's one test per object per ray where it
+// cannot sort objects apart (a walk through several cells of one list), but not many times more;
+// and below grid_pays_floor tests a ray (chapter 07's grid.hpp) a few objects cost nothing either way.
+constexpr double max_tests_over_brute = 3.0;
+
+struct Work {
+    std::uint64_t tests = 0;
+};
+
+// The tests brute force and `accel` make for the same seeded rays (agreement::compare's rays).
+void check(const std::string& scene_name, const LitScene& scene, const NffView& view, int rays)
+{
+    const Objects objects = objects_of(scene, lit_tests);
+    for (const Structure& s : structures()) {
+        INFO(scene_name << " (" << objects.size() << " objects) through the " << s.name);
+        // Brute force's work on the rays, then the structure's, from the counters.
+        reset_counters();
+        agreement::Disagreement brute_d;
+        agreement::compare([](const Objects&, float) { return std::make_unique<BruteForce>(); }, scene, view, s.lambda,
+                           rays, 7, brute_d);
+        const std::uint64_t both_brute = counted(total_counts(), Counter::intersection_tests);
+        reset_counters();
+        agreement::Disagreement d;
+        agreement::compare(s.build, scene, view, s.lambda, rays, 7, d);
+        const std::uint64_t with_structure = counted(total_counts(), Counter::intersection_tests);
+        // compare() asks brute force too: the structure's own tests are the difference.
+        const double brute_tests = static_cast<double>(both_brute) / 2.0;
+        const double structure_tests = static_cast<double>(with_structure) - brute_tests;
+        INFO(d.wrong << " of " << d.rays << " rays answered differently from brute force; the first: " << d.first);
+        CHECK(d.wrong == 0);
+        INFO("tests: brute force " << brute_tests << ", the structure " << structure_tests);
+        CHECK(structure_tests <= max_tests_over_brute * brute_tests + grid_pays_floor * d.rays);
+        const std::unique_ptr<Accelerator> built = s.build(objects, s.lambda);
+        INFO("bytes: " << built->bytes());
+        CHECK(built->bytes() <= max_bytes);
+    }
+}
+
+LitScene with_material()
+{
+    LitScene scene;
+    scene.add_material({});
+    return scene;
+}
+
+NffView looking_at(const point3& at, float distance)
+{
+    NffView view;
+    view.at = at;
+    view.from = at + vec3(0.3f, 0.4f, 1.0f) * distance;
+    return view;
+}
+
+}  // namespace
+
+TEST_CASE("objects all at one point, or each around all the others, are no harder than brute force", "[structures]")
+{
+    // 33,000 identical unit spheres at one point: once 4.4e9 references through 32-bit counts.
+    LitScene same = with_material();
+    for (int k = 0; k < 33000; ++k)
+        same.add_sphere({point3(0.5f, -0.25f, 1.0f), 1.0f}, 0);
+    check("33,000 identical unit spheres", same, looking_at(point3(0.5f, -0.25f, 1.0f), 6.0f), 60);
+
+    // 20,000 spheres of radius 100 within 1 of the origin: each holds all the others' centres.
+    LitScene nested = with_material();
+    Rng rng(3, 1);
+    for (int k = 0; k < 20000; ++k) {
+        const float x = 2 * rng.next_float() - 1, y = 2 * rng.next_float() - 1, z = 2 * rng.next_float() - 1;
+        nested.add_sphere({point3(x, y, z), 100.0f}, 0);
+    }
+    check("20,000 spheres of radius 100 within 1 of the origin", nested, looking_at(point3(0.0f), 400.0f), 60);
+}
+
+TEST_CASE("a scene flat in a coordinate plane through 0 builds a flat grid and answers as brute force", "[structures]")
+{
+    LitScene one = with_material();
+    one.add_triangle({point3(0, 0, 0), point3(1, 0, 0), point3(1, 1, 0)}, 0);
+    check("one triangle at z = 0", one, looking_at(point3(0.6f, 0.4f, 0.0f), 3.0f), 400);
+
+    // 50,000 triangles tiling a square at z = 0.
+    LitScene floor = with_material();
+    const int n = 158;  // 2 n^2 > 50,000
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const point3 a(i, j, 0), b(i + 1, j, 0), c(i + 1, j + 1, 0), d(i, j + 1, 0);
+            floor.add_triangle({a, b, c}, 0);
+            floor.add_triangle({a, c, d}, 0);
+        }
+    check("50,000 triangles at z = 0", floor, looking_at(point3(n / 2.0f, n / 2.0f, 0.0f), n / 2.0f), 80);
+    const Objects objects = objects_of(floor, lit_tests);
+    GridStats stats;
+    build_grid(objects, ch07::default_lambda, &stats);
+    INFO("the grid over 50,000 triangles at z = 0: " << stats.resolution.x << " x " << stats.resolution.y << " x "
+                                                      << stats.resolution.z);
+    CHECK(stats.resolution.z == 1);
+    CHECK(stats.resolution.x > 100);
+}
+
+TEST_CASE("a single object, anywhere and of any size, builds in every structure", "[structures]")
+{
+    for (const float size : {1e-15f, 1e-6f, 1.0f, 1e6f}) {
+        for (const point3 at : {point3(0.0f), point3(-1.0f, -1.0f, 0.0f), point3(1e3f, -2e3f, 5e2f)}) {
+            LitScene one = with_material();
+            one.add_triangle({at, at + vec3(size, 0, 0), at + vec3(0, size, 0)}, 0);
+            std::ostringstream name;
+            name << "one triangle " << size << " across at " << show(at);
+            check(name.str(), one, looking_at(at + vec3(0.3f * size, 0.3f * size, 0.0f), 3.0f * size), 200);
+        }
+    }
+    LitScene tiny = with_material();
+    for (int k = 0; k < 10; ++k)
+        tiny.add_sphere({point3(k * 1e-16f, 0.0f, 0.0f), 1e-16f}, 0);
+    check("ten spheres 1e-15 across in all", tiny, looking_at(point3(5e-16f, 0.0f, 0.0f), 1e-14f), 200);
+}
