@@ -52,6 +52,7 @@ void print_structure_stats(std::ostream& out, const Options& o, int objects, con
             << "hgrid_depth=" << h->stats().depth << '\n'
             << "hgrid_cells=" << h->stats().cells << '\n'
             << "hgrid_references=" << h->stats().references << '\n'
+            << "hgrid_children_over_budget=" << h->stats().children_over_budget << '\n'
             << "bytes=" << h->stats().bytes << '\n'
             << "build_seconds=" << h->stats().build_seconds << '\n';
     else if (accel)
