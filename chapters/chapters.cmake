@@ -24,8 +24,10 @@ foreach(chapter IN LISTS RT_CHAPTERS)
     target_link_libraries(sol_${nn} PUBLIC rt_common)
     if(RT_COVERAGE)
       # The coverage preset: branch counts of the solutions alone, unoptimised so that every branch
-      # of the source stays a branch of the program.
-      target_compile_options(sol_${nn} PRIVATE -O0 --coverage)
+      # of the source stays a branch of the program. The counters are updated atomically: a render
+      # runs the solutions on several threads, and plain increments from two threads can lose counts
+      # or leave gcov a negative one, which gcovr refuses.
+      target_compile_options(sol_${nn} PRIVATE -O0 --coverage -fprofile-update=atomic)
       target_link_options(sol_${nn} PUBLIC --coverage)
     endif()
   endif()
