@@ -16,9 +16,9 @@ Camera make_camera(const CameraSpec& spec)
         throw InputError("field of view must lie strictly between 0 and 180 degrees, got " +
                          std::to_string(spec.vfov_degrees));
     const vec3 back = spec.from - spec.at;
-    if (!(glm::length(back) > 0.0f))
+    if (back == vec3(0.0f) || std::isnan(back.x) || std::isnan(back.y) || std::isnan(back.z))
         throw InputError("the camera looks from the point it looks at: no view direction");
-    const vec3 w = glm::normalize(back);
+    const vec3 w = unit_or_zero(back);
     const vec3 side = glm::cross(spec.up, w);
     if (!(glm::length(side) > 1e-6f * glm::length(spec.up)))
         throw InputError("the camera's up vector is parallel to its view direction (or zero)");

@@ -309,9 +309,9 @@ private:
         }
         // What make_camera refuses, refused here with a line to point at.
         const vec3 back = view.from - view.at;
-        if (!(glm::length(back) > 0.0f))
+        if (back == vec3(0.0f))
             fail(seen_at[1], "view: from and at are the same point (no view direction)");
-        const vec3 side = glm::cross(view.up, glm::normalize(back));
+        const vec3 side = glm::cross(view.up, unit_or_zero(back));
         if (!(glm::length(side) > up_parallel_tolerance * glm::length(view.up)))
             fail(seen_at[2], "view: up is zero or parallel to the view direction");
     }

@@ -19,4 +19,16 @@ using dpoint3 = glm::dvec3;
 template <class T>
 using vec3_t = glm::vec<3, T>;
 
+// v made unit, also when v is so short (1e-29) that its squared length underflows in float, where
+// glm::normalize would divide by 0: then in double. Zero stays zero. The float path is glm's own, so
+// a vector of ordinary length gives glm::normalize's bits.
+inline vec3 unit_or_zero(const vec3& v)
+{
+    if (glm::dot(v, v) > 0.0f)
+        return glm::normalize(v);
+    if (v == vec3(0.0f))
+        return v;
+    return vec3(glm::normalize(dvec3(v)));
+}
+
 }  // namespace rt

@@ -47,3 +47,14 @@ TEST_CASE("an impossible camera is refused with a message naming the problem", "
     for (const Case& c : cases)
         CHECK_THROWS_WITH(make_camera(c.spec), rt::grader::contains_text(c.message));
 }
+
+TEST_CASE("a camera whose eye is 1e-29 from the point it looks at still looks there", "[common]")
+{
+    // |from - at|^2 is 1e-58: 0 in float, where glm::normalize would divide by it.
+    const Camera cam = make_camera({{0, 0, 1e-29f}, {0, 0, 0}, {0, 1, 0}, 45.0f, 8, 8});
+    INFO("w = " << rt::grader::show(cam.w) << ", u = " << rt::grader::show(cam.u));
+    CHECK(cam.w == vec3(0, 0, 1));
+    CHECK(cam.u == vec3(1, 0, 0));
+    CHECK_THROWS_WITH(make_camera({{1e-29f, 0, 0}, {1e-29f, 0, 0}, {0, 1, 0}, 45.0f, 8, 8}),
+                      rt::grader::contains_text("no view direction"));
+}

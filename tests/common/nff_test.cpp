@@ -339,3 +339,12 @@ TEST_CASE("a missing NFF file, or a folder, is answered with FILE:1: what is wro
     const std::string folder = std::filesystem::temp_directory_path().string();
     CHECK_THROWS_WITH(read_nff(folder), folder + ":1: is a folder, not an NFF file");
 }
+
+TEST_CASE("an NFF view whose from is 1e-29 from at is a view, and the same point is not", "[common]")
+{
+    // |from - at|^2 is 1e-58, 0 in float.
+    const NffScene s = parse(replace_all(lit, "from 0 0 5", "from 0 0 1e-29") + "s 0 0 -3 1\n");
+    CHECK(s.view.from != s.view.at);
+    CHECK_THROWS_WITH(parse(replace_all(lit, "at 0 0 0", "at 0 0 5") + "s 0 0 -3 1\n"),
+                      "t.nff:3: view: from and at are the same point (no view direction)");
+}
