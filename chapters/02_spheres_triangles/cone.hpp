@@ -59,6 +59,27 @@ inline bool finite(const vec3& v)
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// The gradient of |x_perp| - (r_b + s h) at the point f from the base: the radial direction,
+// tilted against the slope. At a pointed tip the side has no normal: the axis out of the tip
+// stands in for it. (On a cylinder's axis, which is not on the side, this only keeps it unit.)
+inline dvec3 normal_at(const Frame& frame, const dvec3& f)
+{
+    const dvec3 p_perp = f - glm::dot(f, frame.k) * frame.k;
+    const double distance = glm::length(p_perp);
+    if (!(distance > 0.0))
+        return frame.s > 0.0 ? -frame.k : frame.k;
+    return glm::normalize(p_perp / distance - frame.s * frame.k);
+}
+
+// The side's point on the radial line of p at p's height clamped to [0, H].
+inline dpoint3 side_point(const Frame& frame, const dpoint3& p)
+{
+    const dvec3 f = p - frame.base;
+    const double h_p = glm::dot(f, frame.k);
+    const double h = std::clamp(h_p, 0.0, frame.H);
+    return frame.base + h * frame.k + (frame.r_b + frame.s * h) * radial(frame.k, f - h_p * frame.k);
+}
+
 }  // namespace cone_detail
 
 // The nearest t strictly inside range where the ray meets the side with 0 <= h <= H. Any non-zero
@@ -127,16 +148,8 @@ inline std::optional<float> hit_cone(const Ray& ray, const Cone& cone, Interval 
 // The unit normal at a point p on the side, pointing away from the axis.
 inline vec3 cone_normal(const Cone& cone, const point3& p)
 {
-    const auto [base, k, H, r_b, s] = cone_detail::frame(cone);
-    const dvec3 f = dvec3(p) - base;
-    const dvec3 p_perp = f - glm::dot(f, k) * k;
-    // At a pointed tip the side has no normal: the axis out of the tip stands in for it. (On a
-    // cylinder's axis, which is not on the side, this only keeps the result a unit vector.)
-    const double distance = glm::length(p_perp);
-    if (!(distance > 0.0))
-        return vec3(s > 0.0 ? -k : k);
-    // The gradient of |x_perp| - (r_b + s h): the radial direction, tilted against the slope.
-    return vec3(glm::normalize(p_perp / distance - s * k));
+    const cone_detail::Frame frame = cone_detail::frame(cone);
+    return vec3(cone_detail::normal_at(frame, dvec3(p) - frame.base));
 }
 
 // The point of the side on p's radial line at p's height clamped to [0, H]: a hit point ray.at(t)
@@ -144,11 +157,25 @@ inline vec3 cone_normal(const Cone& cone, const point3& p)
 // `Sphere::BasicIntersect`). Computed in double and rounded to float once, at the end.
 inline point3 cone_surface_point(const Cone& cone, const point3& p)
 {
-    const auto [base, k, H, r_b, s] = cone_detail::frame(cone);
-    const dvec3 f = dvec3(p) - base;
-    const double h_p = glm::dot(f, k);
-    const double h = std::clamp(h_p, 0.0, H);
-    return point3(base + h * k + (r_b + s * h) * cone_detail::radial(k, f - h_p * k));
+    const cone_detail::Frame frame = cone_detail::frame(cone);
+    return point3(cone_detail::side_point(frame, dpoint3(p)));
+}
+
+// A hit on the side as a new ray leaves it: cone_surface_point's point, and the normal there taken
+// from the same double point before it is rounded. Why not cone_normal(cone, cone_surface_point(..)):
+// that rounds the point to float and widens it back, a round trip GCC 12.2 at -O3 dropped in some
+// translation units and kept in others, so chapter 04's program and chapter 07's gave one hit two
+// normals a unit in the last place apart (chapter 04's lesson, "One brute force").
+struct ConeSurfacePoint {
+    point3 p;
+    vec3 n;
+};
+
+inline ConeSurfacePoint cone_surface(const Cone& cone, const point3& p)
+{
+    const cone_detail::Frame frame = cone_detail::frame(cone);
+    const dpoint3 q = cone_detail::side_point(frame, dpoint3(p));
+    return {point3(q), vec3(cone_detail::normal_at(frame, q - frame.base))};
 }
 
 }  // namespace rt

@@ -63,9 +63,8 @@ inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Int
         return Hit{h.t, p, sphere_normal(sphere, p), h.object};
     }
     if (scene.object_is_cone(h.object)) {
-        const Cone& cone = scene.cones[scene.cone_index(h.object)];
-        const point3 p = cone_surface_point(cone, ray.at(h.t));
-        return Hit{h.t, p, cone_normal(cone, p), h.object};
+        const ConeSurfacePoint on = cone_surface(scene.cones[scene.cone_index(h.object)], ray.at(h.t));
+        return Hit{h.t, on.p, on.n, h.object};
     }
     const Triangle& tri = scene.triangles[scene.triangle_index(h.object)];
     return Hit{h.t, triangle_surface_point(tri, TriangleHit<float>{h.t, h.beta, h.gamma}), face_normal(tri), h.object};
