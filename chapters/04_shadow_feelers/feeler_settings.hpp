@@ -4,8 +4,9 @@
 // A feeler starts on the surface it lights. Its origin, the hit point, is rounded to float, so it
 // lies a little above or a little below the true surface, and a feeler that starts below re-finds
 // its own surface at a tiny t: the dark speckles called shadow acne. Four answers: the first three
-// fail at some scale, the last only on large surfaces lying in a coordinate plane (README.md, "The
-// measured problem" and "Where the robust offset stops"):
+// fail at some scale, the last only on large surfaces lying in a coordinate plane, where the
+// triangle test's own error bound takes over (README.md, "The measured problem" and "Where the
+// robust offset stops, and the test's own bound"):
 #pragma once
 
 #include "common/interval.hpp"

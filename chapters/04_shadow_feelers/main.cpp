@@ -59,6 +59,7 @@ struct Case {
     self_intersection::Side side;
     self_intersection::PointFrom from;
     float eye_distance = 3.0f;  // in units of S
+    self_intersection::Test test = self_intersection::Test::watertight;
 };
 
 // 0%, 0.0035%, 3.5%, 45%, 100%: two significant digits, never in exponent form.
@@ -91,6 +92,10 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
         {"a sphere, feelers toward a light outside", Surface::sphere, Side::front, PointFrom::surface},
         {"a floor through y = 0, 20 S square, feelers up", Surface::floor, Side::front, PointFrom::surface},
         {"a floor through y = 0, feelers down (back side)", Surface::floor, Side::back, PointFrom::surface},
+        {"a floor through y = 0, feelers up, the test refusing t within its rounding (the kit's)", Surface::floor,
+         Side::front, PointFrom::surface, 3.0f, Test::bounded},
+        {"a floor through y = 0, feelers down, the test refusing t within its rounding (the kit's)", Surface::floor,
+         Side::back, PointFrom::surface, 3.0f, Test::bounded},
         {"triangles seen from 1000 S away, hit point from the surface", Surface::triangles, Side::front, PointFrom::surface, 1000.0f},
         {"triangles seen from 1000 S away, hit point from ray.at(t)", Surface::triangles, Side::front, PointFrom::ray, 1000.0f},
         {"a sphere seen from 1000 S away, hit point from the surface", Surface::sphere, Side::front, PointFrom::surface, 1000.0f},
@@ -111,14 +116,15 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
             std::cout << "| " << power_of_ten(scale) << " |";
             for (const auto& [name, offset] : offsets) {
                 Score score;
-                const double seconds = median_seconds(1, [&, &offset = offset] { score = measure(scene, points, offset, c.side, 2); });
+                const double seconds = median_seconds(1, [&, &offset = offset] { score = measure(scene, points, offset, c.side, 2, c.test); });
                 std::cout << ' ' << percent(score.rehit_rate());
                 if (front)
                     std::cout << " / " << percent(score.missed_rate());
                 std::cout << " |";
                 std::ostringstream value;
                 value << (c.surface == Surface::sphere ? "sphere" : c.surface == Surface::floor ? "floor" : "triangles") << ':' << (front ? "front" : "back")
-                      << ':' << (c.from == PointFrom::surface ? "surface" : "ray") << ':' << c.eye_distance << "S:" << name
+                      << ':' << (c.from == PointFrom::surface ? "surface" : "ray") << ':' << c.eye_distance << "S:"
+                      << (c.test == Test::bounded ? "bounded:" : "") << name
                       << ':' << power_of_ten(scale);
                 rehit_table.rows.push_back({"surface:side:point:eye:offset:scale", value.str(), seconds, score.feelers,
                                             score.rehit_rate()});

@@ -143,15 +143,25 @@ inline Feeler feeler_from(const SurfacePoint& point, Side side, Offset offset, R
     return {point, Ray{start.origin, d}, Interval{start.t_min, infinity}};
 }
 
-inline bool rehits(const ScaledScene& scene, const Feeler& f)
+// Which triangle test the feeler meets its own surface with: chapter 02's watertight test as it is
+// (the offsets' own measure), or refusing hits within its rounding of t = 0 (the kit's, lit_tests).
+enum class Test { watertight, bounded };
+
+inline bool hits_triangle(const Feeler& f, const Triangle& tri, Test test)
+{
+    return test == Test::bounded ? hit_triangle(f.ray, tri, f.range, TriangleTest::watertight_bounded).has_value()
+                                 : hit_triangle_watertight(f.ray, tri, f.range).has_value();
+}
+
+inline bool rehits(const ScaledScene& scene, const Feeler& f, Test test = Test::watertight)
 {
     switch (f.from.surface) {
     case Surface::sphere:
         return hit_sphere_precise(f.ray, scene.sphere, f.range).has_value();
     case Surface::triangles:
-        return hit_triangle_watertight(f.ray, scene.mesh.triangle(f.from.face), f.range).has_value();
+        return hits_triangle(f, scene.mesh.triangle(f.from.face), test);
     case Surface::floor:
-        return hit_triangle_watertight(f.ray, scene.floor.triangle(f.from.face), f.range).has_value();
+        return hits_triangle(f, scene.floor.triangle(f.from.face), test);
     }
     return false;  // not reached: the switch names every surface
 }
@@ -168,7 +178,7 @@ inline bool finds_occluder(const ScaledScene& scene, const Feeler& f)
 // On the sphere only front-side feelers are measured: one into the sphere meets its far side for
 // real, which a re-hit could not be told from when it grazes.
 inline Score measure(const ScaledScene& scene, const std::vector<SurfacePoint>& points, Offset offset, Side side,
-                     std::uint64_t seed)
+                     std::uint64_t seed, Test test = Test::watertight)
 {
     Score s;
     Rng rng(seed, 41);
@@ -176,7 +186,7 @@ inline Score measure(const ScaledScene& scene, const std::vector<SurfacePoint>& 
         assert(side == Side::front || points[k].surface != Surface::sphere);
         const Feeler f = feeler_from(points[k], side, offset, rng);
         ++s.feelers;
-        if (rehits(scene, f) && s.rehits++ == 0)
+        if (rehits(scene, f, test) && s.rehits++ == 0)
             s.first_rehit = k;
         if (side == Side::front) {
             ++s.occluder_tests;

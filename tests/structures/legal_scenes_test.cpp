@@ -3,6 +3,7 @@
 // chapters 07-10 must build them within its budgets and answer every seeded ray as brute force does
 // (object and t), without testing many times more objects than brute force.
 #include "08_mailboxing/figure.hpp"
+#include "04_shadow_feelers/self_intersection.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "tests/ch07/agreement.hpp"
 
@@ -151,4 +152,68 @@ TEST_CASE("a single object, anywhere and of any size, builds in every structure"
     for (int k = 0; k < 10; ++k)
         tiny.add_sphere({point3(k * 1e-16f, 0.0f, 0.0f), 1e-16f}, 0);
     check("ten spheres 1e-15 across in all", tiny, looking_at(point3(5e-16f, 0.0f, 0.0f), 1e-14f), 200);
+}
+
+TEST_CASE("a ray leaving a triangle never finds it again, however large the triangle or far from the origin", "[structures]")
+{
+    // Once: a floor 2e5 across under a camera 11 above it speckled with its own shadow (a feeler 1.5e-5
+    // above it "hit" it at t = 0.002), and the BVH disagreed with brute force there. Each triangle
+    // alone in its scene; hit points where camera rays meet it, feelers leaving on both sides in every
+    // direction (grazing ones included), from the robust offset (EXERCISE 04.3).
+    struct Placed {
+        std::string name;
+        Triangle tri;
+        point3 eye;
+    };
+    const std::vector<Placed> triangles = {
+        {"a triangle 2e5 across at y = 0 through the origin", {{-1e5f, 0, -1e5f}, {0, 0, 1e5f}, {1e5f, 0, -1e5f}}, {0, 11, 0.5f}},
+        {"a tilted triangle 2e5 across spanning the origin", {{-1e5f, -3e3f, -1e5f}, {0, 1e3f, 1e5f}, {1e5f, 200, -1e5f}}, {0, 200, 0.5f}},
+        {"a tilted triangle 2e5 across, 1e5 from the origin", {{0, -3e3f, 0}, {1e5f, 1e3f, 2e5f}, {2e5f, 200, 0}}, {1e5f, 200, 1e5f}},
+        {"a triangle 2e7 across at z = 0", {{-1e7f, -1e7f, 0}, {1e7f, -1e7f, 0}, {0, 1e7f, 0}}, {3, 2, 40}},
+        {"a triangle 1 across at 1e6 from the origin", {{1e6f, 1e6f, 1e6f}, {1e6f + 1, 1e6f, 1e6f}, {1e6f, 1e6f + 1, 1e6f + 0.5f}}, {1e6f + 0.3f, 1e6f + 0.3f, 1e6f + 3}},
+    };
+    for (const Placed& placed : triangles) {
+        LitScene scene = with_material();
+        scene.add_triangle(placed.tri, 0);
+        const vec3 n = face_normal(placed.tri);
+        const point3 centroid = (placed.tri.a + placed.tri.b + placed.tri.c) / 3.0f;
+        Rng rng(31, 0);
+        int hits = 0, rehits = 0;
+        std::string first;
+        for (int k = 0; k < 4000; ++k) {
+            // A camera ray toward a random point of the triangle.
+            float beta = rng.next_float();
+            float gamma = rng.next_float();
+            if (beta + gamma > 1.0f) {
+                beta = 1.0f - beta;
+                gamma = 1.0f - gamma;
+            }
+            const point3 target = placed.tri.a + beta * (placed.tri.b - placed.tri.a) + gamma * (placed.tri.c - placed.tri.a);
+            const point3 eye = k % 2 ? placed.eye : centroid + (centroid - placed.eye);  // each side in turn
+            const Ray ray{eye, glm::normalize(target - eye)};
+            const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
+            if (!hit)
+                continue;
+            ++hits;
+            const vec3 away = self_intersection::random_in_hemisphere(rng, k % 4 < 2 ? n : -n);
+            const Ray feeler{offset_ray_origin(hit->p, hit->n, away), away};
+            const std::optional<Hit> again = closest_hit(feeler, scene, Interval{0.0f, infinity});
+            if (again && rehits++ == 0)
+                first = "the feeler from " + show(hit->p) + " along " + show(away) + " met it again at t = " +
+                        std::to_string(again->t);
+        }
+        INFO(placed.name << ": " << rehits << " of " << hits << " feelers found their own triangle again; " << first);
+        CHECK(hits > 3000);
+        CHECK(rehits == 0);
+    }
+}
+
+TEST_CASE("a floor 2e5 across under a camera 11 above it is lit everywhere, through every structure as brute force", "[structures]")
+{
+    LitScene floor = with_material();
+    floor.add_triangle({{-1e5f, 0, -1e5f}, {0, 0, 1e5f}, {1e5f, 0, -1e5f}}, 0);
+    NffView view;
+    view.from = point3(0, 11, 0.5f);
+    view.at = point3(30, 0, 30);
+    check("a floor 2e5 across", floor, view, 400);
 }

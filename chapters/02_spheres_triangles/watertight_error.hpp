@@ -1,0 +1,83 @@
+// How far the watertight test's t (EXERCISE 02.5) can be from the true distance, from float's
+// rounding alone: a conservative bound in the manner of pbrt-v3 (Pharr, Jakob and Humphreys,
+// "Physically Based Rendering", 3rd ed., sec. 3.9.6, "Robust Triangle Intersections"). Chapter 04
+// refuses any hit nearer than this bound (TriangleTest::watertight_bounded, shape_tests.hpp): a ray
+// leaving a triangle then never finds that triangle again, however large it is or far from the
+// origin (chapter 04's lesson, "Where the robust offset stops, and the test's own bound").
+//
+// The test's t is sum(e_i z_i) / det, where the z_i are the corners' heights along the ray and the
+// e_i the edge functions of the corners sheared into the ray's frame. Each step adds a few
+// roundings, each at most gamma(n) = n u / (1 - n u) (u = 2^-24) of the magnitudes it combines; the
+// magnitudes are those of the corners relative to the ray's origin, so a triangle 1e5 across
+// carries errors of 1e5 u whatever the ray's own length.
+#pragma once
+
+#include "02_spheres_triangles/shapes.hpp"
+#include "common/ray.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+namespace watertight_detail {
+
+// pbrt's gamma(n): the relative error of n float roundings in a row.
+constexpr double gamma(int n)
+{
+    constexpr double u = 0x1p-24;  // half of float's epsilon
+    return (n * u) / (1.0 - n * u);
+}
+
+inline double max3(float a, float b, float c)
+{
+    return std::max(a, std::max(b, c));
+}
+
+}  // namespace watertight_detail
+
+// The bound on |t - true t| for `ray` meeting `tri`, in the ray's lengths; 0 for a triangle the
+// ray is parallel to (the test finds no hit there to refuse). The magnitudes are combined in double,
+// where the products of a tiny scene's (1e-15 across: 1e-45 and below) do not underflow to 0.
+inline float watertight_t_error(const Ray& ray, const Triangle& tri)
+{
+    using watertight_detail::gamma;
+    using watertight_detail::max3;
+    // The test's own frame (EXERCISE 02.5, steps 1-3): kz the ray's longest axis.
+    const vec3 ad = glm::abs(ray.dir);
+    const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;  // the bound is the same for either order
+    if (ray.dir[kz] == 0.0f)
+        return 0.0f;
+    const float Sx = ray.dir[kx] / ray.dir[kz], Sy = ray.dir[ky] / ray.dir[kz], Sz = 1.0f / ray.dir[kz];
+    const vec3 A = tri.a - ray.origin, B = tri.b - ray.origin, C = tri.c - ray.origin;
+    const float Ax = A[kx] - Sx * A[kz], Ay = A[ky] - Sy * A[kz];
+    const float Bx = B[kx] - Sx * B[kz], By = B[ky] - Sy * B[kz];
+    const float Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
+    const float U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
+    const float det = U + V + W;
+    if (!(det != 0.0f))
+        return 0.0f;
+
+    // The magnitudes each step combines: sheared x and y, heights along the ray (scaled by Sz, as
+    // t is, and unscaled, as the shear multiplies them), and the edge functions.
+    const double max_x = max3(std::abs(Ax), std::abs(Bx), std::abs(Cx));
+    const double max_y = max3(std::abs(Ay), std::abs(By), std::abs(Cy));
+    const double max_z = max3(std::abs(A[kz]), std::abs(B[kz]), std::abs(C[kz]));
+    const double max_zt = std::abs(double(Sz)) * max_z;
+    const double max_e = max3(std::abs(U), std::abs(V), std::abs(W));
+
+    // Each corner minus the origin (1 rounding), the shear's S (1), its product (1) and difference
+    // (1): gamma(5) of the x and z they combine (|S| <= 1, so |S z| <= |z|). The scaled height:
+    // the difference, Sz and the product, gamma(3).
+    const double delta_x = gamma(5) * (max_x + 2.0 * max_z);
+    const double delta_y = gamma(5) * (max_y + 2.0 * max_z);
+    const double delta_z = gamma(3) * max_zt;
+    // An edge function x0 y1 - y0 x1: two products and a difference of inputs with those errors.
+    const double delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    // t det = sum(e_i z_i): three products and two sums of errored terms; then divided by det.
+    return static_cast<float>(3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) /
+                              std::abs(double(det)));
+}
+
+}  // namespace rt
