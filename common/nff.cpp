@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <sstream>
 #include <string_view>
 
 namespace rt {
@@ -188,10 +190,46 @@ public:
             fail(lex_.last_line(), "no objects (s, p, pp or c): nothing to render");
         if (scene_.lights.empty())
             fail(lex_.last_line(), "no lights ('l'): every object would be black");
+        warn_if_coarse();
         return std::move(scene_);
     }
 
 private:
+    // Why 2^14 float steps: a coordinate is rounded to the step between floats at its size (2^-23 to
+    // 2^-24 of it), so a scene far from the origin is drawn on a lattice of that step. Fewer than 2^14 steps
+    // across the scene and its shapes are placed to within 1/16384 of it: round shapes show facets
+    // and stairs, normals and shadows flicker, and an accelerator's cells cannot be finer than the
+    // rounding (chapter 07's margin). Said once, as the reader's warnings are.
+    void warn_if_coarse()
+    {
+        point3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        const auto grow = [&](const point3& p, float r) {
+            lo = glm::min(lo, p - vec3(r));
+            hi = glm::max(hi, p + vec3(r));
+        };
+        for (const NffSphere& s : scene_.spheres)
+            grow(s.center, s.radius);
+        for (const NffTriangle& t : scene_.triangles)
+            for (const point3& p : t.p)
+                grow(p, 0.0f);
+        for (const NffCone& c : scene_.cones) {
+            grow(c.base, c.base_radius);
+            grow(c.apex, c.apex_radius);
+        }
+        const vec3 extent = hi - lo;
+        const float size = std::max({extent.x, extent.y, extent.z});
+        const float far = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                    std::abs(hi.z)});
+        const float step = std::nextafter(far, std::numeric_limits<float>::infinity()) - far;
+        if (!(size > 0.0f) || !(size < 0x1p14f * step))
+            return;
+        std::ostringstream why;
+        why << name_ << ": the scene is " << size << " across but lies " << far << " from the origin, where float's step is "
+            << step << ": only " << static_cast<long long>(size / step)
+            << " steps across it, so its shapes are rounded visibly (facets, flickering shadows); move it toward the origin";
+        scene_.warnings.push_back(why.str());
+    }
+
     [[noreturn]] void fail(int line, const std::string& what) const
     {
         throw InputError(name_ + ":" + std::to_string(line) + ": " + what);

@@ -144,6 +144,14 @@ inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::
     const int count = static_cast<int>(ids.size());
     GridPlan plan;
     plan.lambda = lambda;
+    // Cells no finer than the margin: a cell smaller than the rounding the margin covers sorts
+    // nothing apart, and each object would be listed in the (margin / cell)^3 cells around it. Only a
+    // scene far from the origin for its size meets this (300 spheres 100 across at 1e7: a margin of
+    // 9.5, and 948 cells per object without it).
+    const vec3 extent = box.extent();
+    const float widest = std::max({extent.x, extent.y, extent.z});
+    if (margin > 0.0f && widest / margin < static_cast<float>(max_per_axis))
+        max_per_axis = std::max(1, static_cast<int>(widest / margin));
     for (;;) {
         const cell3 n = grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis);
         plan.shape = grid_shape(count > 0 ? grown(box, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);

@@ -219,6 +219,18 @@ TEST_CASE("a polygon or patch with no area is skipped with a warning naming its 
     CHECK_THROWS_WITH(parse(lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n"), "t.nff:13: no objects (s, p, pp or c): nothing to render");
 }
 
+TEST_CASE("a scene only a few hundred float steps across at its distance from the origin is warned of, once", "[common]")
+{
+    // 100 across at 1e7, where floats are 1 apart: a hundred steps across the scene.
+    const NffScene far = parse(lit + "s 10000000 10000000 10000000 2\ns 10000096 10000000 10000000 2\n");
+    REQUIRE(far.warnings.size() == 1);
+    CHECK_THAT(far.warnings[0], rt::grader::contains_text("t.nff: the scene is 100 across but lies 1.00001e+07 from the origin, "
+                                                          "where float's step is 1: only 100 steps across it"));
+    // The same scene at 1e3 (floats 6e-5 apart), and a tiny one at the origin: no warning.
+    CHECK(parse(lit + "s 1000 1000 1000 2\ns 1096 1000 1000 2\n").warnings.empty());
+    CHECK(parse(lit + "s 0 0 0 1e-12\n").warnings.empty());
+}
+
 TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong", "[common]")
 {
     struct Case {
