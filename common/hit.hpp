@@ -9,8 +9,11 @@ namespace rt {
 struct Hit {
     float t = 0.0f;
     point3 p{0.0f};  // the hit point, ray.at(t)
-    vec3 n{0.0f};    // unit surface normal as the object defines it (not flipped toward the ray)
+    vec3 n{0.0f};    // unit surface normal as the object defines it (not flipped toward the ray): the
+                     // shading normal, a smooth patch's corner normals interpolated
     int object = -1; // index of the object in its scene array
+    vec3 ng{n};      // the geometric normal (a triangle's face normal), which rays leave along; n itself
+                     // unless the surface is a smooth patch
 };
 
 }  // namespace rt

@@ -103,7 +103,7 @@ inline color trace(const ClassicScene& scene, const Ray& ray, int depth)
 
     // The secondary rays, each leaving from the robust offset of the hit point (EXERCISE 04.3).
     const auto follow = [&](const vec3& dir) {
-        return trace(scene, Ray{offset_ray_origin(hit->p, hit->n, dir), dir}, depth + 1);
+        return trace(scene, Ray{offset_ray_origin(hit->p, hit->ng, dir), dir}, depth + 1);
     };
     const std::optional<vec3> refracted = m.t > 0.0f ? refract(ray.dir, hit->n, m.ior) : std::nullopt;
     const float k_reflect = m.ks + (m.t > 0.0f && !refracted ? m.t : 0.0f);  // total internal reflection

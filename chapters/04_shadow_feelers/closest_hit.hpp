@@ -50,8 +50,9 @@ inline point3 triangle_surface_point(const Triangle& tri, const TriangleHit<floa
 }
 
 // The nearest hit over all spheres, triangles and cones with t strictly inside `range`, its point on
-// the surface and its geometric normal (the sphere's and the cone's outward one, a triangle's face
-// normal). With `one_sided`, triangle k with one_sided[k] set is seen from its front only: a ray
+// the surface and its normals: the sphere's and the cone's outward one, a triangle's face normal,
+// and for a smooth patch its corner normals interpolated as the shading normal n (ng stays the
+// face's). With `one_sided`, triangle k with one_sided[k] set is seen from its front only: a ray
 // that meets its back passes through (the classic NFF rules' opaque polygons, classic.hpp).
 inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Interval range,
                                       const std::vector<bool>* one_sided = nullptr)
@@ -68,8 +69,12 @@ inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Int
         const ConeSurfacePoint on = cone_surface(scene.cones[scene.cone_index(h.object)], ray.at(h.t));
         return Hit{h.t, on.p, on.n, h.object};
     }
-    const Triangle& tri = scene.triangles[scene.triangle_index(h.object)];
-    return Hit{h.t, triangle_surface_point(tri, TriangleHit<float>{h.t, h.beta, h.gamma}), face_normal(tri), h.object};
+    const int k = scene.triangle_index(h.object);
+    const Triangle& tri = scene.triangles[k];
+    const TriangleHit<float> on{h.t, h.beta, h.gamma};
+    const vec3 ng = face_normal(tri);
+    const CornerNormals* smooth = scene.smooth_normals(k);
+    return Hit{h.t, triangle_surface_point(tri, on), smooth ? interpolated_normal(*smooth, on) : ng, h.object, ng};
 }
 
 }  // namespace rt

@@ -71,7 +71,7 @@ inline bool light_blocked(const LitScene& scene, const Hit& hit, const point3& l
     if (settings.query == ShadowQuery::off)
         return false;
     count(Counter::shadow_rays);
-    const RayStart start = ray_start(hit.p, hit.n, light - hit.p, settings.offset);
+    const RayStart start = ray_start(hit.p, hit.ng, light - hit.p, settings.offset);
     if (settings.query == ShadowQuery::closest_hit)
         return occluded_by_closest_hit(scene, start.origin, light, start.t_min);
     return scene.accelerator ? occluded_by_accelerator(scene, start.origin, light, start.t_min)

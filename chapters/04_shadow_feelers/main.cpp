@@ -208,7 +208,7 @@ void feeler_tests_by_outcome(const Options& o)
             for (const PointLight& light : scene.lights) {
                 if (glm::dot(n, light.position - hit->p) <= 0.0f)
                     continue;  // shade sends no feeler toward a light behind the surface
-                const RayStart start = ray_start(hit->p, hit->n, light.position - hit->p, Offset::robust);
+                const RayStart start = ray_start(hit->p, hit->ng, light.position - hit->p, Offset::robust);
                 bool is_blocked = false;
                 std::uint64_t used[2];
                 double seconds[2];

@@ -2,8 +2,9 @@
 // (k_d = Kd times the fill colour, a white highlight of weight Ks and exponent Shine), and its
 // lights as point lights with shadow feelers. Chapters 05 and 06 build on the same scene.
 //
-// Chapter 04 shades flat, with the geometric normal: a patch's vertex normals (`pp`) are not used.
-// Mirror and glass (Ks and T) need chapter 03's recursion: the classic mode (classic.hpp) has it.
+// A patch (`pp`) is shaded smooth with its vertex normals, as chapter 02 teaches (EXERCISE 02.6);
+// its feelers leave along its face normal. Mirror and glass (Ks and T) need chapter 03's
+// recursion: the classic mode (classic.hpp) has it.
 #pragma once
 
 #include "02_spheres_triangles/nff_scene.hpp"
@@ -54,8 +55,12 @@ inline LitScene lit_scene(const NffScene& nff)
         scene.add_material(phong_material(m));
     for (const NffSphere& s : nff.spheres)
         scene.add_sphere({s.center, s.radius}, s.material);
-    for (const NffTriangle& t : nff.triangles)
-        scene.add_triangle(triangle_of(t), t.material);
+    for (const NffTriangle& t : nff.triangles) {
+        if (t.smooth)
+            scene.add_smooth_triangle(triangle_of(t), CornerNormals{t.n[0], t.n[1], t.n[2]}, t.material);
+        else
+            scene.add_triangle(triangle_of(t), t.material);
+    }
     for (const NffCone& c : nff.cones)
         scene.add_cone(cone_of(c), c.material);
     for (const NffLight& light : nff.lights) {

@@ -39,6 +39,10 @@ struct LitScene {
     std::vector<int> sphere_material;    // sphere_material[k] indexes `materials` for spheres[k]
     std::vector<Triangle> triangles;
     std::vector<int> triangle_material;
+    // The corner normals of the smooth patches (NFF's `pp`), as chapter 02 shades them; a flat
+    // triangle (none given, or a triangle added before any patch) is shaded with its face normal.
+    std::vector<CornerNormals> triangle_normals;
+    std::vector<bool> triangle_smooth;
     std::vector<Cone> cones;
     std::vector<int> cone_material;
     std::vector<PhongMaterial> materials;
@@ -85,6 +89,22 @@ struct LitScene {
         assert(material >= 0 && material < static_cast<int>(materials.size()));
         triangles.push_back(tri);
         triangle_material.push_back(material);
+    }
+
+    // A triangle shaded smooth: its corners' normals interpolated at each hit (EXERCISE 02.6).
+    void add_smooth_triangle(const Triangle& tri, const CornerNormals& normals, int material)
+    {
+        add_triangle(tri, material);
+        triangle_normals.resize(triangles.size());
+        triangle_smooth.resize(triangles.size(), false);
+        triangle_normals.back() = normals;
+        triangle_smooth.back() = true;
+    }
+
+    // The corner normals of triangle k when it is a smooth patch, else nullptr.
+    const CornerNormals* smooth_normals(int k) const
+    {
+        return k < static_cast<int>(triangle_smooth.size()) && triangle_smooth[k] ? &triangle_normals[k] : nullptr;
     }
 
     void add_cone(const Cone& cone, int material)

@@ -94,12 +94,12 @@ std::vector<RaySet> ray_sets(const SceneRender& file, const LitScene& scene)
             for (const PointLight& light : scene.lights) {
                 if (glm::dot(n, light.position - hit->p) <= 0.0f)
                     continue;
-                const Feeler f = feeler(offset_ray_origin(hit->p, hit->n, light.position - hit->p), light.position, 0.0f);
+                const Feeler f = feeler(offset_ray_origin(hit->p, hit->ng, light.position - hit->p), light.position, 0.0f);
                 shadow.rays.push_back(f.ray);
                 shadow.ranges.push_back(f.range);
             }
             const vec3 r = reflect(ray.dir, n);
-            secondary.rays.push_back({offset_ray_origin(hit->p, hit->n, r), r});
+            secondary.rays.push_back({offset_ray_origin(hit->p, hit->ng, r), r});
             secondary.ranges.push_back({0.0f, infinity});
         }
     return {primary, shadow, secondary};

@@ -41,7 +41,7 @@ inline RaySet incoherent_rays(const LitScene& scene, const RaySet& primary, std:
         if (!hit)
             continue;
         Rng rng(seed, k);
-        const vec3 n = glm::dot(hit->n, primary.rays[k].dir) < 0.0f ? hit->n : -hit->n;
+        const vec3 n = glm::dot(hit->ng, primary.rays[k].dir) < 0.0f ? hit->ng : -hit->ng;
         // n plus a uniform unit vector, normalised, is cosine-distributed about n (Shirley).
         vec3 d = n + extremes::random_unit_vector(rng);
         d = glm::dot(d, d) > 1e-12f ? glm::normalize(d) : n;

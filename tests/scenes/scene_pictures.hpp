@@ -1,6 +1,7 @@
 // The kit's own NFF scenes (common/scenes/) rendered small from their files, as the programs'
 // --scene renders them (scene_renders.hpp): the pictures scene_pictures_test.cpp compares with
-// tests/references/scenes/, which the `references` target renders from the solutions.
+// tests/references/scenes/, which the `references` target renders from the solutions. The patches
+// show smooth shading through the files' vertex normals, in chapter 04 too (as chapter 02 teaches).
 // cones.nff holds every kind of object (spheres, polygons, cones, a mirror); spheres.nff a mirror
 // and a glass sphere.
 #pragma once
@@ -25,7 +26,7 @@ struct ScenePicture {
 inline std::vector<ScenePicture> scene_pictures()
 {
     std::vector<ScenePicture> pictures;
-    for (const std::string scene : {"cones", "spheres"})
+    for (const std::string scene : {"cones", "patches", "spheres"})
         for (const scene_renders::Mode mode : scene_renders::modes)
             pictures.push_back({"scenes/" + std::string(scene_renders::name(mode)) + "_" + scene, [scene, mode] {
                                     const NffScene nff = read_nff(std::string(RT_NFF_SCENES_DIR) + "/" + scene + ".nff");
