@@ -235,3 +235,36 @@ TEST_CASE("300 spheres 100 across, 1e7 from the origin, build cells no finer tha
                              << " cells, " << stats.references << " references");
     CHECK(stats.references <= 100 * 300);
 }
+
+TEST_CASE("long thin slivers, one huge triangle over thousands of tiny ones, and a shrinking spiral answer as brute force", "[structures]")
+{
+    // 5,000 slivers 0.01 wide and up to 14 long, every way across a box 16 wide: each crosses many cells.
+    LitScene slivers = with_material();
+    Rng rng(12, 0);
+    const auto u = [&rng] { return rng.next_float(); };
+    for (int k = 0; k < 5000; ++k) {
+        const point3 a(16 * u() - 8, 16 * u() - 8, 16 * u() - 8);
+        const vec3 along(16 * u() - 8, 16 * u() - 8, 16 * u() - 8);
+        slivers.add_triangle({a, a + along, a + along + vec3(0.01f, 0, 0.005f)}, 0);
+    }
+    check("5,000 long thin slivers", slivers, looking_at(point3(0.0f), 30.0f), 60);
+
+    // One triangle 2,000 across over 5,000 triangles 0.05 across: the huge one is in every cell.
+    LitScene huge = with_material();
+    huge.add_triangle({{-1000, 1, -1000}, {0, 1, 1000}, {1000, 1, -1000}}, 0);
+    for (int k = 0; k < 5000; ++k) {
+        const point3 a(20 * u() - 10, 2.9f * u() - 2, 20 * u() - 10);
+        huge.add_triangle({a, a + vec3(0.05f, 0, 0), a + vec3(0, 0.05f, 0.02f)}, 0);
+    }
+    check("a huge triangle over 5,000 tiny ones", huge, looking_at(point3(0.0f), 30.0f), 60);
+
+    // After SPD's shells: 5,761 spheres along a spiral, each 0.999 the size of the one before, the
+    // first large enough to hold many of the others: the hashed grid once listed each 19,090 times.
+    LitScene spiral = with_material();
+    float r = 1.0f;
+    for (int k = 0; k < 5761; ++k, r *= 0.999f) {
+        const float angle = 0.05f * static_cast<float>(k);
+        spiral.add_sphere({point3(r * 3 * std::cos(angle), r * 3 * std::sin(angle), 0.002f * static_cast<float>(k)), r}, 0);
+    }
+    check("a spiral of 5,761 shrinking spheres", spiral, looking_at(point3(0.0f, 0.0f, 5.0f), 20.0f), 60);
+}
