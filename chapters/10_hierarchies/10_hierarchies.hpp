@@ -79,7 +79,9 @@ SahSplit best_split(const Bounds& parent, const std::vector<SahBin>& bins);
 
 // EXERCISE 10.3: whether a node becomes a leaf: when it holds at most leaf_size objects (the
 // slides' "4-8 works well"), when it is at the depth limit (the root is depth 0), or when the best
-// split (its SAH cost) would cost more than testing all n objects here (n sah_intersect_cost).
+// split (its SAH cost) would cost at least as much as testing all n objects here
+// (n sah_intersect_cost): at a tie the leaf wins, as in pbrt, since a split that saves nothing
+// still costs a node.
 bool make_leaf(int n, int depth, int leaf_size, int max_depth, float best_split_cost);
 
 // Why 64: a stack of node numbers for the traversal (10.4); the build's depth limit keeps a path
