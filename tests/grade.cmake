@@ -26,10 +26,14 @@ foreach(nn IN LISTS chapters)
   execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" ${config} --target grade_${nn}
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    # Keep the compiler's errors, one line each, for the student's report.
-    string(REGEX MATCHALL "[^\n]*error[^\n]*" errors "${log}")
+    # Keep the compiler's errors, one line each, for the student's report. CMake's lists are
+    # strings split at semicolons, and the commonest error is "expected ';' before ...": each
+    # semicolon is kept apart as a placeholder while the lines pass through the list commands.
+    string(REPLACE ";" "<rt-semicolon>" log_lines "${log}")
+    string(REGEX MATCHALL "[^\n]*error[^\n]*" errors "${log_lines}")
     list(SUBLIST errors 0 12 errors)
     string(JOIN "\\n" errors ${errors})
+    string(REPLACE "<rt-semicolon>" ";" errors "${errors}")
     string(REPLACE "\t" " " errors "${errors}")
     # Paths as the student knows them: their own file by name, the kit's relative to it.
     string(REPLACE "${EXERCISES_DIR}/" "" errors "${errors}")
