@@ -11,7 +11,7 @@ file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/solutions/
 file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${class}/bob")
 file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
 file(READ "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp" text)
-file(WRITE "${class}/carol/02_spheres_triangles.cpp" "${text}\nint carol_forgot_the_value = ;\n")
+file(WRITE "${class}/carol/02_spheres_triangles.cpp" "${text}\nint carol_forgot_the_semicolon = 1\n")
 
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${class}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
     -P "${SOURCE_DIR}/tests/grade_batch.cmake"
@@ -68,8 +68,9 @@ endforeach()
 if(NOT json MATCHES "does not compile" OR NOT json MATCHES "02_spheres_triangles.cpp:[0-9]+:[0-9]+: error")
   fail("carol's results should say her chapter 02 does not compile, with the compiler's error")
 endif()
-# gcc's words for it, semicolon and all (quoted ';' or, in a UTF-8 locale, with curly quotes).
-if(NOT json MATCHES "expected primary-expression before [^ ]*;[^ ]* token")
+# The compiler's words for it, semicolon and all: gcc's "expected ',' or ';' at end of input" (with
+# curly quotes in a UTF-8 locale), clang's "expected ';' after top level declarator".
+if(NOT json MATCHES "error: expected [^\\]*;")
   fail("carol's results should give the compiler's error whole, its semicolon included")
 endif()
 if(json MATCHES "${class}")
