@@ -41,4 +41,4 @@ export CMAKE_PREFIX_PATH="$prefix"
 
 cmake --preset test -B "$work/test" -DRT_CATCH2_MAJOR=3 | grep -E "Catch2|stb:"
 cmake --build "$work/test"
-ctest --test-dir "$work/test" --output-on-failure --no-tests=error
+ctest --test-dir "$work/test" --output-on-failure --no-tests=error -j2
