@@ -196,10 +196,10 @@ public:
 
 private:
     // Why 2^14 float steps: a coordinate is rounded to the step between floats at its size (2^-23 to
-    // 2^-24 of it), so a scene far from the origin is drawn on a lattice of that step. Fewer than 2^14 steps
-    // across the scene and its shapes are placed to within 1/16384 of it: round shapes show facets
-    // and stairs, normals and shadows flicker, and an accelerator's cells cannot be finer than the
-    // rounding (chapter 07's margin). Said once, as the reader's warnings are.
+    // 2^-24 of it), so a scene far from the origin is drawn on a lattice of that step. Fewer than
+    // 2^14 steps across the scene and its shapes are placed to within 1/16384 of it: round shapes
+    // show facets and stairs, normals and shadows flicker, and an accelerator's cells cannot be finer
+    // than the rounding (chapter 07's margin). Said once, as the reader's warnings are.
     void warn_if_coarse()
     {
         point3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
