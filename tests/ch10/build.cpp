@@ -3,6 +3,8 @@
 #include "10_hierarchies/bvh.hpp"
 #include "tests/ch07/describe.hpp"
 
+#include <sstream>
+
 using namespace rt;
 using namespace rt::grader;
 
@@ -36,27 +38,67 @@ STABILITY_TEST("sah_cost: a parent of no area (every object at one point) gives 
     check_cost(point, point, 2, point, 3, 0.125f + 5, "no area: the children's shares are 1");
 }
 
+namespace {
+
+// Bins along x, one unit wide each, of a parent 4 x 1 x 1, holding `counts` objects.
+std::vector<SahBin> unit_bins(const std::vector<int>& counts)
+{
+    std::vector<SahBin> bins(counts.size());
+    for (size_t k = 0; k < bins.size(); ++k) {
+        bins[k].count = counts[k];
+        if (counts[k] > 0)
+            bins[k].bounds = box({static_cast<float>(k), 0, 0}, {static_cast<float>(k) + 1, 1, 1});
+    }
+    return bins;
+}
+
+// Every plane's cost, worked out here from the SAH (not from the student's sah_cost), so a failure
+// shows the whole table: "after bin 0: 4.57, after bin 1: 4.57, after bin 2: 8.93".
+std::string plane_costs(const Bounds& parent, const std::vector<SahBin>& bins)
+{
+    std::ostringstream table;
+    for (size_t plane = 0; plane + 1 < bins.size(); ++plane) {
+        Bounds left, right;
+        int n_left = 0, n_right = 0;
+        for (size_t k = 0; k < bins.size(); ++k) {
+            (k <= plane ? left : right).grow(bins[k].bounds);
+            (k <= plane ? n_left : n_right) += bins[k].count;
+        }
+        table << (plane ? ", " : "") << "after bin " << plane << ": ";
+        if (n_left == 0 || n_right == 0)
+            table << "(a side is empty)";
+        else
+            table << sah_traversal_cost + (left.half_area() * n_left + right.half_area() * n_right) / parent.half_area();
+    }
+    return table.str();
+}
+
+void check_best_split(const Bounds& parent, const std::vector<int>& counts, int expected_split, float expected_cost,
+                      const char* why)
+{
+    const std::vector<SahBin> bins = unit_bins(counts);
+    const SahSplit got = best_split(parent, bins);
+    std::ostringstream shown;
+    for (const int c : counts)
+        shown << c << ' ';
+    INFO("bins along x holding " << shown.str() << "objects; each plane's cost: " << plane_costs(parent, bins)
+         << ". Got the plane after bin " << got.split << " at cost " << got.cost << ", expected after bin "
+         << expected_split << " at " << expected_cost << ": " << why);
+    CHECK(got.split == expected_split);
+    CHECK(std::abs(got.cost - expected_cost) < 1e-5f * expected_cost);
+}
+
+}  // namespace
+
 GRADED_TEST("best_split: the cheapest plane between bins, by the SAH, with both sides non-empty", "10.2", 5)
 {
-    // Four bins along x, one unit wide each, of a parent 4 x 1 x 1 (half area 9).
-    const Bounds parent = box({0, 0, 0}, {4, 1, 1});
-    std::vector<SahBin> bins(4);
-    for (int k = 0; k < 4; ++k)
-        bins[k].bounds = box({static_cast<float>(k), 0, 0}, {static_cast<float>(k) + 1, 1, 1});
-    bins[0].count = 10;
-    bins[1].count = 0;
-    bins[1].bounds = Bounds{};
-    bins[2].count = 1;
-    bins[3].count = 1;
-    const SahSplit got = best_split(parent, bins);
-    // Plane 0: 10 in [0,1] (area 3) against 2 in [2,4] (area 5): 0.125 + 30/9 + 10/9 = 4.569.
-    // Plane 1: the same sides (bin 1 is empty): equal cost, so plane 0 stays.
-    // Plane 2: 11 in [0,3] (area 7) against 1 in [3,4] (area 3): 0.125 + 77/9 + 3/9 = 8.93.
-    const float expected = 0.125f + 30.0f / 9 + 10.0f / 9;
-    INFO("bins along x with 10, 0, 1 and 1 objects: got the plane after bin " << got.split << " at cost " << got.cost
-         << ", expected after bin 0 at " << expected << " (the plane after the empty bin 1 costs the same; the first wins)");
-    CHECK(got.split == 0);
-    CHECK(std::abs(got.cost - expected) < 1e-5f);
+    const Bounds parent = box({0, 0, 0}, {4, 1, 1});  // half area 9
+    // 10 in [0,1] (half area 3) against 2 in [2,4] (5): 0.125 + 30/9 + 10/9. The plane after the
+    // empty bin 1 has the same sides, so the same cost: the first of equals wins.
+    check_best_split(parent, {10, 0, 1, 1}, 0, 0.125f + 30.0f / 9 + 10.0f / 9,
+                     "the plane after the empty bin 1 costs the same; the first of equal planes wins");
+    // The cheapest plane is the last: 3 in [0,3] (7) against 10 in [3,4] (3): 0.125 + 21/9 + 30/9.
+    check_best_split(parent, {1, 1, 1, 10}, 2, 0.125f + 21.0f / 9 + 30.0f / 9, "the last plane is the cheapest");
 
     std::vector<SahBin> one(3);
     one[1].count = 7;

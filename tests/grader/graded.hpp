@@ -11,6 +11,8 @@
 
 #include "tests/grader/catch.hpp"
 
+#include <glm/vec2.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -64,6 +66,23 @@ namespace Catch {
 template <>
 struct StringMaker<glm::vec3> {
     static std::string convert(const glm::vec3& v) { return rt::grader::show(v); }
+};
+template <>
+struct StringMaker<glm::vec2> {
+    static std::string convert(const glm::vec2& v)
+    {
+        std::ostringstream s;
+        s.precision(9);
+        s << '(' << v.x << ", " << v.y << ')';
+        return s.str();
+    }
+};
+template <>
+struct StringMaker<glm::ivec3> {
+    static std::string convert(const glm::ivec3& c)
+    {
+        return '(' + std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ')';
+    }
 };
 template <>
 struct StringMaker<rt::Ray> {
