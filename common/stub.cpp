@@ -41,4 +41,10 @@ std::vector<std::string> stubs_that_ran()
     return names;
 }
 
+void forget_stubs()
+{
+    for (std::atomic<bool>& flag : ran)
+        flag.store(false, std::memory_order_relaxed);
+}
+
 }  // namespace rt

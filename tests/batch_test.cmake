@@ -1,7 +1,8 @@
 # A class of three graded as a batch (grade_batch.cmake) on chapters 01 and 02, as an instructor
-# would: alice hands in the solutions, bob forgets chapter 02's file, carol's chapter 02 does not
-# compile. The batch must grade all three to a complete gradebook, and bob's and carol's chapter 02
-# must list every case at 0 in results.json and fail in junit.xml.
+# would: alice hands in the solutions, bob forgets chapter 02's file, carol hands in chapter 01
+# untouched and a chapter 02 that does not compile. The batch must grade all three to a complete
+# gradebook; bob's and carol's chapter 02 and carol's chapter 01 must each be one line, worth the
+# whole chapter, in results.json, junit.xml and the class page.
 #   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P batch_test.cmake
 file(REMOVE_RECURSE "${WORK}/class")
 set(class "${WORK}/class")
@@ -50,22 +51,32 @@ if(NOT bob_row MATCHES "^\"bob\",[0-9]+,0,[0-9]+$")
   fail("bob has no chapter 02 file, so 0 there: ${bob_row}")
 endif()
 
+# Chapter 02's maximum, from alice's cases.
 file(READ "${WORK}/build/students/alice/results.json" alice_json)
-string(REGEX MATCHALL "\"number\": \"02\\.[0-9A-Z]+\"" alice_cases "${alice_json}")
-list(LENGTH alice_cases cases)
+string(REGEX MATCHALL "\"number\": \"02\\.[0-9A-Z]+\", \"score\": [0-9]+, \"max_score\": [0-9]+" alice_cases "${alice_json}")
+set(chapter_02_max 0)
+foreach(c IN LISTS alice_cases)
+  string(REGEX MATCH "[0-9]+$" points "${c}")
+  math(EXPR chapter_02_max "${chapter_02_max} + ${points}")
+endforeach()
+if(chapter_02_max EQUAL 0)
+  fail("alice's results.json lists no chapter 02 case")
+endif()
+# bob's missing file and carol's compile error are one line each, worth the whole chapter, in
+# results.json and in junit.xml; so is carol's untouched chapter 01.
 foreach(student bob carol)
   file(READ "${WORK}/build/students/${student}/results.json" json)
-  string(REGEX MATCHALL "\"number\": \"02\\.[0-9A-Z]+\", \"score\": 0" zeros "${json}")
-  list(LENGTH zeros n)
-  if(NOT n EQUAL cases)
-    fail("${student}'s results.json lists ${n} of chapter 02's ${cases} cases at 0")
+  string(REGEX MATCHALL "\"number\": \"02[^\"]*\"" lines "${json}")
+  list(LENGTH lines n)
+  if(NOT n EQUAL 1 OR NOT json MATCHES "\"number\": \"02\", \"score\": 0, \"max_score\": ${chapter_02_max},")
+    fail("${student}'s results.json should give chapter 02 as one line at 0 of ${chapter_02_max}, not ${n} lines:\n${json}")
   endif()
   file(READ "${WORK}/build/students/${student}/junit.xml" junit)
-  if(NOT junit MATCHES "testsuite name=\"chapter 02\" tests=\"${cases}\" failures=\"${cases}\"")
-    fail("${student}'s junit.xml should fail all ${cases} cases of chapter 02")
+  if(NOT junit MATCHES "testsuite name=\"chapter 02\" tests=\"1\" failures=\"1\"")
+    fail("${student}'s junit.xml should hold chapter 02 as one failed case:\n${junit}")
   endif()
 endforeach()
-if(NOT json MATCHES "does not compile" OR NOT json MATCHES "02_spheres_triangles.cpp:[0-9]+:[0-9]+: error")
+if(NOT json MATCHES "chapter 02 does not compile" OR NOT json MATCHES "02_spheres_triangles.cpp:[0-9]+:[0-9]+: error")
   fail("carol's results should say her chapter 02 does not compile, with the compiler's error")
 endif()
 # The compiler's words for it, semicolon and all: gcc's "expected ',' or ';' at end of input" (with
@@ -75,6 +86,11 @@ if(NOT json MATCHES "error: expected [^\\]*;")
 endif()
 if(json MATCHES "${class}")
   fail("carol's results carry the grading machine's paths")
+endif()
+string(REGEX MATCHALL "\"number\": \"01[^\"]*\"" lines "${json}")
+list(LENGTH lines n)
+if(NOT n EQUAL 1 OR NOT json MATCHES "chapter 01 is still the handed-out stubs")
+  fail("carol's chapter 01 is the handed-out stubs: one line saying so, not ${n}")
 endif()
 file(READ "${WORK}/build/students/bob/results.json" json)
 if(NOT json MATCHES "the submission has no 02_spheres_triangles.cpp")
@@ -87,4 +103,24 @@ foreach(student alice bob carol)
     fail("class.html should link ${student}'s report with their total")
   endif()
 endforeach()
+# Each chapter's cell says what went wrong there.
+if(NOT page MATCHES ">bob</a>.*no file.*>carol</a>.*untouched.*does not compile")
+  fail("class.html should flag bob's missing file, carol's untouched chapter 01 and her compile error:\n${page}")
+endif()
 message(STATUS "a class of three: ${out}")
+
+# A student's grader run after an edit rebuilds itself first: the build folder now grades carol's
+# files (the last graded); her chapter 01, the untouched stubs, becomes the solution, and grading
+# 01.2 alone must rebuild and score it in full, not grade the stale program.
+file(READ "${SOURCE_DIR}/solutions/01_ray_casting.cpp" solution)
+file(WRITE "${class}/carol/01_ray_casting.cpp" "${solution}")
+file(GLOB grader LIST_DIRECTORIES false "${WORK}/build/tests/grade_01" "${WORK}/build/tests/*/grade_01.exe" "${WORK}/build/tests/grade_01.exe")
+execute_process(COMMAND ${grader} "[01.2]" RESULT_VARIABLE rc OUTPUT_VARIABLE regrade ERROR_VARIABLE regrade)
+if(WIN32)
+  if(NOT rc EQUAL 2 OR NOT regrade MATCHES "changed after this grader was built")
+    fail("grade_01 after an edit should say to rebuild it first (${rc}):\n${regrade}")
+  endif()
+elseif(NOT rc EQUAL 0 OR NOT regrade MATCHES "changed after this grader was built: rebuilding it first"
+       OR NOT regrade MATCHES "01\\.2 +14 / 14")
+  fail("grade_01 after an edit should rebuild and give 01.2 full points (${rc}):\n${regrade}")
+endif()

@@ -7,7 +7,7 @@
 #         -P grade.cmake
 # (CONFIG: the configuration to build with a multi-configuration generator, as Visual Studio's.)
 # with the environment variables RT_GRADEBOOK=file.csv and RT_STUDENT=name set, it also appends
-# the student's row to that gradebook.
+# the student's row to that gradebook (and with RT_CLASS_ROWS=file, to the class page's table).
 # A chapter that does not compile scores 0 and shows the compiler's first lines; a case that loops
 # forever or crashes loses its own points only.
 string(REPLACE "|" ";" chapters "${CHAPTERS}")
@@ -39,10 +39,18 @@ foreach(nn IN LISTS chapters)
     string(REPLACE "${EXERCISES_DIR}/" "" errors "${errors}")
     string(REPLACE "${SOURCE_DIR}/" "" errors "${errors}")
     # Every case of the chapter at 0, listed by a grader linked with the kit's own stubs, so the
-    # maximum stays whole; then the line that says why.
+    # maximum stays whole; then the line that says why, which the report shows in their place.
     execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" ${config} --target cases_${nn} OUTPUT_QUIET ERROR_QUIET)
     execute_process(COMMAND "${GRADERS_DIR}/cases_${nn}" --list-cases "${result}" OUTPUT_QUIET ERROR_QUIET)
-    file(APPEND "${result}" "${nn}.build\t0\t0\tchapter ${nn}'s exercise file does not compile (or is missing), so every case of the chapter scores 0. The compiler's first errors:\t${errors}\n")
+    # One line for the chapter (grade_report counts it as all of the chapter's cases): a missing
+    # file says so, a file that does not compile gives the compiler's first errors.
+    if(errors MATCHES "the submission has no ([^ \"]+\\.cpp)")
+      set(why "the submission has no ${CMAKE_MATCH_1}")
+      set(errors "")
+    else()
+      set(why "chapter ${nn} does not compile, so none of its cases ran. The compiler's first errors:")
+    endif()
+    file(APPEND "${result}" "${nn}.build\t0\t0\t${why}\t${errors}\n")
     message(STATUS "chapter ${nn} does not compile:\n${log}")
   else()
     message(STATUS "---- chapter ${nn}: grading")
@@ -55,6 +63,9 @@ endforeach()
 set(book "")
 if(DEFINED ENV{RT_GRADEBOOK})
   set(book --gradebook "$ENV{RT_GRADEBOOK}" --student "$ENV{RT_STUDENT}")
+endif()
+if(DEFINED ENV{RT_CLASS_ROWS})
+  list(APPEND book --class-row "$ENV{RT_CLASS_ROWS}" --student "$ENV{RT_STUDENT}")
 endif()
 execute_process(COMMAND "${REPORT}" --json "${BUILD_DIR}/results.json" --junit "${BUILD_DIR}/junit.xml"
     --html "${BUILD_DIR}/report.html" --title "the exercises in ${EXERCISES_DIR}"

@@ -21,7 +21,8 @@ endif()
 if(NOT GRADEBOOK)
   set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
 endif()
-file(REMOVE "${GRADEBOOK}")
+set(class_rows "${BUILD_DIR}/class-rows.html")
+file(REMOVE "${GRADEBOOK}" "${class_rows}")
 # Any generator serves: Ninja where there is one, else the platform's (make, or Visual Studio, which
 # builds several configurations: hence --config and -C below).
 set(generator "")
@@ -33,7 +34,6 @@ elseif(NOT EXISTS "${BUILD_DIR}/CMakeCache.txt")
     set(generator -G Ninja)
   endif()
 endif()
-set(class_rows "")
 file(GLOB entries LIST_DIRECTORIES true "${SUBMISSIONS}/*")
 list(SORT entries)
 foreach(entry IN LISTS entries)
@@ -55,8 +55,11 @@ foreach(entry IN LISTS entries)
   endif()
   set(ENV{RT_GRADEBOOK} "${GRADEBOOK}")
   set(ENV{RT_STUDENT} "${student}")
+  set(ENV{RT_CLASS_ROWS} "${class_rows}")
+  # Shown as it goes (the first student's chapters build the kit, minutes on a busy machine) and
+  # kept, for the total.
   execute_process(COMMAND "${CMAKE_CTEST_COMMAND}" --test-dir "${BUILD_DIR}" -C Release -R "^grade$" --output-on-failure -V
-    RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+    RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log ECHO_OUTPUT_VARIABLE ECHO_ERROR_VARIABLE)
   string(REGEX MATCH "total +[0-9]+ / [0-9]+" total "${log}")
   if(NOT rc EQUAL 0 OR NOT total)
     message(WARNING "grade_batch: grading ${student} did not finish:\n${log}")
@@ -67,12 +70,20 @@ foreach(entry IN LISTS entries)
   file(MAKE_DIRECTORY "${BUILD_DIR}/students/${student}")
   file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" "${BUILD_DIR}/report.html"
     DESTINATION "${BUILD_DIR}/students/${student}")
-  string(APPEND class_rows "<tr><td><a href=\"students/${student}/report.html\">${student}</a></td><td>${total}</td></tr>\n")
 endforeach()
-# The class's page: every student's total, linking to their own report (images embedded in each).
+# The class's page: every student's total, linking to their own report (images embedded in each),
+# and each chapter's points, flagged where a file is missing, does not compile, is untouched, or
+# had a case stopped (rows written by grade_report).
+set(rows "")
+if(EXISTS "${class_rows}")
+  file(READ "${class_rows}" rows)
+endif()
 file(WRITE "${BUILD_DIR}/class.html" "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>The class</title>
-<style>body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:0.3em 0.6em}table{border-collapse:collapse}</style>
-</head><body><h1>The class</h1><p>Gradebook: gradebook.csv</p>
-<table><tr><th>student</th><th>points</th></tr>\n${class_rows}</table></body></html>\n")
+<style>body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:0.3em 0.6em}table{border-collapse:collapse}
+td.ok{background:#dfd}td.part{background:#ffd}td.flag{background:#fdd}small{color:#733}</style>
+</head><body><h1>The class</h1><p>Gradebook: gradebook.csv. A chapter's cell is flagged with what an instructor
+should look at: no file, does not compile, untouched (still the handed-out stubs), an exercise still its
+stub, a case stopped by its time limit or crashed.</p>
+<table>\n${rows}</table></body></html>\n")
 message(STATUS "class report: ${BUILD_DIR}/class.html")
 message(STATUS "gradebook: ${GRADEBOOK}")

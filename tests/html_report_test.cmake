@@ -1,21 +1,26 @@
-# The HTML report of a grading run, as a reader sees it: the untouched stubs of chapter 01 graded
-# (every case fails, the picture case with its three images), written as a page by grade_report,
-# which must show the points, every failure, and the expected, actual and difference images
-# embedded in it. When chromium is installed, a headless chromium loads the page and takes a
+# The HTML report of a grading run, as a reader sees it: a chapter 01 whose image is upside down
+# graded (the mutant 01_y_flipped: the picture case fails with its three images), written as a page
+# by grade_report, which must show the points, every failure, and the expected, actual and
+# difference images embedded in it. When chromium is installed, a headless chromium loads the page and takes a
 # screenshot (WORK/report.png), which must not be blank.
-#   cmake -D GRADER=<grade_01> -D REPORT=<grade_report> -D WORK=<folder> -P html_report_test.cmake
+#   cmake -D GRADER=<grade_mutant_01_y_flipped> -D REPORT=<grade_report> -D WORK=<folder> -P html_report_test.cmake
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${GRADER}" --results "${WORK}/01.results" --artifacts "${WORK}/pictures"
   OUTPUT_QUIET ERROR_QUIET)
-execute_process(COMMAND "${REPORT}" --html "${WORK}/report.html" --title "the stubs" "${WORK}/01.results"
+execute_process(COMMAND "${REPORT}" --html "${WORK}/report.html" --title "y flipped" "${WORK}/01.results"
   RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/report.html")
   message(FATAL_ERROR "grade_report wrote no report (${rc})")
 endif()
 file(READ "${WORK}/report.html" html)
 file(STRINGS "${WORK}/01.results" cases)
-list(LENGTH cases n)
+set(n 0)
+foreach(c IN LISTS cases)
+  if(c MATCHES "^[^\t]+\t([0-9]+)\t([0-9]+)\t" AND NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2)
+    math(EXPR n "${n} + 1")
+  endif()
+endforeach()
 string(REGEX MATCHALL "<tr class=\"fail\">" failed "${html}")
 list(LENGTH failed f)
 # (A data URI holds a ';', which would split a CMake list: match up to it, then the PNG's signature.)
@@ -25,8 +30,8 @@ list(LENGTH pngs p)
 list(LENGTH images i)
 string(REGEX MATCHALL "<img" all_images "${html}")
 list(LENGTH all_images a)
-if(NOT html MATCHES "<h1>the stubs: 0 / [1-9][0-9]* points</h1>" OR NOT f EQUAL n OR NOT i EQUAL 3 OR NOT p EQUAL 3 OR NOT a EQUAL 3)
-  message(FATAL_ERROR "the report should show 0 points, ${n} failed cases (it shows ${f}) and the picture case's "
+if(NOT html MATCHES "<h1>y flipped: [0-9]+ / [1-9][0-9]* points</h1>" OR n EQUAL 0 OR NOT f EQUAL n OR NOT i EQUAL 3 OR NOT p EQUAL 3 OR NOT a EQUAL 3)
+  message(FATAL_ERROR "the report should show the points, ${n} failed cases (it shows ${f}) and the picture case's "
     "three images embedded (it has ${i} of ${a})")
 endif()
 find_program(CHROMIUM NAMES chromium chromium-browser NO_CACHE)

@@ -3,16 +3,18 @@
 //
 //   grade_report --json results.json --junit junit.xml [--html report.html [--title T]] RESULTS...
 //
-// A chapter that did not compile comes as one line numbered NN.build, saying why, and its cases
-// listed at 0 of their points: each becomes a failure carrying that message, and the maximum is the
-// same for every student.
+// A chapter that did not compile comes as a line numbered NN.build, saying why, and its cases
+// listed at 0 of their points; the report shows it as one line worth all of them, so the maximum is
+// the same for every student (summary.hpp). So is a chapter still the handed-out stubs, and an
+// exercise still its stub.
 //
 // A missing results file is named, and the report still covers the others. With --gradebook FILE --student NAME it also appends the
-// student's points per chapter to a CSV gradebook (batch grading).
+// student's points per chapter to a CSV gradebook, and with --class-row FILE a row of the class
+// page (batch grading): the student's points per chapter, each marked with what went wrong there.
 #include "tests/grader/html_report.hpp"
 #include "tests/grader/points.hpp"
+#include "tests/grader/summary.hpp"
 
-#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -21,7 +23,7 @@
 int main(int argc, char** argv)
 {
     using namespace rt::grader;
-    std::string json, junit, gradebook, student, html, title = "Grade";
+    std::string json, junit, gradebook, student, html, class_row, title = "Grade";
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
@@ -35,6 +37,8 @@ int main(int argc, char** argv)
             student = argv[++k];
         else if (arg == "--html" && k + 1 < argc)
             html = argv[++k];
+        else if (arg == "--class-row" && k + 1 < argc)
+            class_row = argv[++k];
         else if (arg == "--title" && k + 1 < argc)
             title = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
@@ -50,28 +54,8 @@ int main(int argc, char** argv)
             std::cerr << "grade_report: " << path << ": no results (did that chapter's grader crash?)\n";
             ++missing;
         }
-    // A chapter that did not compile: its NN.build line says why, and its cases (listed at 0 by
-    // a grader linked with the kit's own stubs) carry that message as their output.
-    for (const CaseResult& build : results) {
-        const size_t dot = build.number.find(".build");
-        if (dot == std::string::npos)
-            continue;
-        const std::string chapter = build.number.substr(0, dot + 1);
-        for (CaseResult& r : results)
-            if (r.number.rfind(chapter, 0) == 0 && r.number != build.number && r.output.empty())
-                r.output = build.name + (build.output.empty() ? "" : "\n" + build.output);
-    }
-    std::vector<CaseResult> kept;
-    for (const CaseResult& r : results) {
-        const size_t dot = r.number.find(".build");
-        const bool listed = dot != std::string::npos &&
-                            std::any_of(results.begin(), results.end(), [&](const CaseResult& c) {
-                                return c.number.rfind(r.number.substr(0, dot + 1), 0) == 0 && c.number != r.number;
-                            });
-        if (!listed)
-            kept.push_back(r);
-    }
-    results = kept;
+    // A chapter that did not compile or is untouched, and an exercise still its stub: one line each.
+    results = summarize(results);
     print_points_table(std::cout, results);
     int score = 0, max_score = 0;
     for (const CaseResult& r : results) {
@@ -98,6 +82,10 @@ int main(int argc, char** argv)
         if (!append_gradebook_row(gradebook, student, results))
             return std::cerr << "grade_report: " << gradebook << ": cannot write\n", 2;
         std::cout << "added " << student << " to " << gradebook << '\n';
+    }
+    if (!class_row.empty()) {
+        if (!append_class_row(class_row, student, chapter_marks(results)))
+            return std::cerr << "grade_report: " << class_row << ": cannot write\n", 2;
     }
     return missing == 0 ? 0 : 1;
 }

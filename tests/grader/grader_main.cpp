@@ -23,8 +23,12 @@
 #endif
 
 #include "tests/grader/child_process.hpp"
+#include "tests/grader/freshness.hpp"
 #include "tests/grader/picture.hpp"
 #include "tests/grader/points.hpp"
+#include "tests/grader/summary.hpp"
+
+#include "common/stub.hpp"
 
 #include <algorithm>
 #include <iostream>
@@ -80,8 +84,10 @@ public:
     void testCaseStarting(const Catch::TestCaseInfo& info) override
     {
         current_ = CaseResult{};
+        last_info_.clear();
         current_.name = info.name;
         read_tags(info, current_);
+        rt::forget_stubs();
     }
 
 #ifdef RT_CATCH2_V3
@@ -99,9 +105,14 @@ public:
         const Catch::AssertionResult& a = stats.assertionResult;
         if (a.isOk())
             return;
-        std::ostringstream out;
+        // A case's description of its input (INFO) is said once for the checks that fail on it.
+        std::string info;
         for (const Catch::MessageInfo& m : stats.infoMessages)
-            out << m.message << '\n';
+            info += m.message + '\n';
+        std::ostringstream out;
+        if (info != last_info_)
+            out << info;
+        last_info_ = info;
         if (a.hasExpression())
             out << "failed: " << a.getExpressionInMacro() << "\n  with: " << a.getExpandedExpression() << '\n';
         if (a.hasMessage())
@@ -116,6 +127,8 @@ public:
         current_.score = current_.passed ? current_.max_score : 0;
         if (stats.totals.assertions.passed == 0 && stats.totals.assertions.failed == 0)
             current_.output += "the test checked nothing: it earns no points\n";
+        for (const std::string& exercise : rt::stubs_that_ran())
+            current_.stubs += (current_.stubs.empty() ? "" : " ") + exercise;
         if (current_.number.empty())
             return;
         results.push_back(current_);
@@ -125,6 +138,7 @@ public:
 
 private:
     CaseResult current_;
+    std::string last_info_;
 };
 
 CATCH_REGISTER_LISTENER(PointsListener)
@@ -178,6 +192,7 @@ size_t results_so_far()
 // A case whose process ended without reporting is recorded as crashed or stopped.
 void run_isolated(Catch::Session& session, const std::string& program, int cpu_limit)
 {
+    std::string last_stub;  // an exercise still its stub is said once, not once per case
     for (const CaseResult& planned : planned_cases(session)) {
         const size_t before = results_so_far();
         std::cout.flush();
@@ -188,7 +203,14 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
         std::vector<CaseResult> got;
         read_results(results_path, got);
         if (got.size() > before) {
-            print_case(std::cout, got.back());
+            const CaseResult& r = got.back();
+            const std::string verdict = stub_verdict(r);
+            if (verdict.empty())
+                print_case(std::cout, r);
+            else if (r.number != last_stub)
+                std::cout << "  STUB  " << r.number << "  " << verdict << '\n';
+            if (!verdict.empty())
+                last_stub = r.number;
             continue;
         }
         CaseResult lost = planned;
@@ -196,11 +218,11 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
         switch (status.end) {
         case ChildStatus::End::exited:
             lost.output = status.code == exit_cpu_limit
-                              ? "the case used more than " + limit + " s of CPU time and was stopped: an endless loop?"
-                              : "the case ended without reporting (exit status " + std::to_string(status.code) + ")";
+                              ? stopped_mark + ("the case used more than " + limit + " s of CPU time: an endless loop?")
+                              : crashed_mark + ("the case ended without reporting (exit status " + std::to_string(status.code) + ")");
             break;
         case ChildStatus::End::crashed:
-            lost.output = "the case crashed (" +
+            lost.output = crashed_mark + std::string("the case crashed (") +
 #ifdef _WIN32
                           std::string("exception code ") + std::to_string(static_cast<unsigned>(status.code)) +
 #else
@@ -209,8 +231,9 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
                           ") before it could report";
             break;
         case ChildStatus::End::stopped:
-            lost.output = "the case was still running after " + std::to_string(static_cast<int>(wall_backstop_factor * cpu_limit)) +
-                          " s on the clock and was stopped: is it waiting for something?";
+            lost.output = stopped_mark + ("the case was still running after " +
+                                          std::to_string(static_cast<int>(wall_backstop_factor * cpu_limit)) +
+                                          " s on the clock: is it waiting for something?");
             break;
         case ChildStatus::End::not_started:
             lost.output = "the grader could not start a process for the case (" + program + ")";
@@ -229,6 +252,8 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
 int main(int argc, char* argv[])
 {
     using namespace rt::grader;
+    if (const std::optional<int> regraded = regrade_if_stale(this_program(argv[0]), argc, argv))
+        return *regraded;
     Catch::Session session;
     Catch::StringMaker<float>::precision = 9;  // so a tolerance like 2e-6 does not print as 0.0
     std::string expect, list_path;
@@ -277,7 +302,7 @@ int main(int argc, char* argv[])
     else
         failed = session.run();
 
-    print_points_table(std::cout, results);
+    print_points_table(std::cout, summarize(results));
     if (expect.empty())
         return failed;
     return check_expectation(std::cout, results, expect) ? 0 : 1;

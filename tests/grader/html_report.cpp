@@ -108,4 +108,32 @@ bool write_html_report(const std::string& path, const std::string& title, std::v
     return static_cast<bool>(out);
 }
 
+bool append_class_row(const std::string& path, const std::string& student, const std::vector<ChapterMark>& chapters)
+{
+    const bool is_new = !std::ifstream(path).good();
+    std::ofstream out(path, std::ios::app);
+    if (is_new) {
+        out << "<tr><th>student</th><th>points</th>";
+        for (const ChapterMark& c : chapters)
+            out << "<th>" << escape_xml(c.chapter) << "</th>";
+        out << "</tr>\n";
+    }
+    int score = 0, max_score = 0;
+    for (const ChapterMark& c : chapters) {
+        score += c.score;
+        max_score += c.max_score;
+    }
+    out << "<tr><td><a href=\"students/" << escape_xml(student) << "/report.html\">" << escape_xml(student) << "</a></td><td>"
+        << score << " / " << max_score << "</td>";
+    for (const ChapterMark& c : chapters) {
+        const char* look = c.score == c.max_score ? "ok" : c.marks.empty() ? "part" : "flag";
+        out << "<td class=\"" << look << "\">" << c.score << " / " << c.max_score;
+        if (!c.marks.empty())
+            out << "<br><small>" << escape_xml(c.marks) << "</small>";
+        out << "</td>";
+    }
+    out << "</tr>\n";
+    return static_cast<bool>(out);
+}
+
 }  // namespace rt::grader

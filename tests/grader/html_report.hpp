@@ -4,6 +4,7 @@
 #pragma once
 
 #include "tests/grader/points.hpp"
+#include "tests/grader/summary.hpp"
 
 #include <string>
 #include <vector>
@@ -11,5 +12,10 @@
 namespace rt::grader {
 
 bool write_html_report(const std::string& path, const std::string& title, std::vector<CaseResult> results);
+
+// Appends a student's row to the class page's table (a header row first when the file is new):
+// their total, linking to students/NAME/report.html, then each chapter's points with its marks
+// (a missing file, a compile failure, untouched stubs, a stopped or crashed case) flagged.
+bool append_class_row(const std::string& path, const std::string& student, const std::vector<ChapterMark>& chapters);
 
 }  // namespace rt::grader

@@ -175,7 +175,7 @@ std::string tidy_output(std::string output)
 static void write_line(std::ostream& out, const CaseResult& r)
 {
     out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
-        << escape_line(tidy_output(r.output)) << '\n';
+        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\n';
 }
 
 bool write_results(const std::string& path, const std::vector<CaseResult>& results)
@@ -219,6 +219,7 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
         r.passed = r.score == r.max_score;
         r.name = fields[3];
         r.output = fields.size() > 4 ? fields[4] : "";
+        r.stubs = fields.size() > 5 ? fields[5] : "";
         results.push_back(r);
     }
     return true;
@@ -291,6 +292,13 @@ bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results
             if (r.passed)
                 out << "grader self-check: the untouched stub passes " << r.number << " '" << r.name
                     << "': that case cannot tell a stub from an answer\n";
+        // The report says "still the handed-out stub" only of a case that saw a stub run.
+        for (const CaseResult& r : results)
+            if (!r.passed && r.stubs.empty()) {
+                ok = false;
+                out << "grader self-check: " << r.number << " '" << r.name
+                    << "' fails on the stubs but ran none of them: the report cannot say it waits for a stub\n";
+            }
     } else if (expect == "less") {
         ok = score < max_score;
         if (!ok)

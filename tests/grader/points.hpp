@@ -16,6 +16,7 @@ struct CaseResult {
     int score = 0;
     bool passed = false;
     std::string output;   // what went in and what came out, for a failed case
+    std::string stubs;    // the exercises whose handed-out stubs ran in the case: "07.1 07.3"
 };
 
 // One case's verdict, and for a failed case what went in and came out, indented.

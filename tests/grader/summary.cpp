@@ -1,0 +1,166 @@
+#include "tests/grader/summary.hpp"
+
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace rt::grader {
+
+namespace {
+
+std::string chapter_of(const std::string& number) { return number.substr(0, 2); }
+
+bool is_build_line(const CaseResult& r) { return r.number.size() > 2 && r.number.substr(2) == ".build"; }
+
+bool ran_stub(const CaseResult& r, const std::string& exercise)
+{
+    std::istringstream words(r.stubs);
+    std::string w;
+    while (words >> w)
+        if (w == exercise)
+            return true;
+    return false;
+}
+
+// "07.1 07.3 07.4" as "07.1, 07.3 and 07.4".
+std::string in_words(const std::string& list)
+{
+    std::istringstream words(list);
+    std::vector<std::string> w{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    std::string out;
+    for (size_t k = 0; k < w.size(); ++k)
+        out += (k == 0 ? "" : k + 1 == w.size() ? " and " : ", ") + w[k];
+    return out;
+}
+
+bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+
+std::string grep_hint(const std::string& exercise)
+{
+    return "grep -n \"EXERCISE " + exercise + "\" exercises/*.cpp";
+}
+
+const std::string untouched_words = " is still the handed-out stubs";
+const std::string stub_words = " is still the handed-out stub";
+const std::string missing_words = "the submission has no ";
+
+}  // namespace
+
+std::string stub_verdict(const CaseResult& r)
+{
+    if (r.passed || r.stubs.empty())
+        return "";
+    if (ran_stub(r, r.number))
+        return r.number + stub_words;
+    const bool several = r.stubs.find(' ') != std::string::npos;
+    return r.number + " cannot be graded yet: it runs " + in_words(r.stubs) + (several ? ", which are" : ", which is") +
+           stub_words.substr(3) + (several ? "s" : "");
+}
+
+std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
+{
+    // Chapters in the order they came, each with its cases.
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<CaseResult>> cases;
+    std::map<std::string, CaseResult> builds;
+    for (const CaseResult& r : results) {
+        const std::string nn = chapter_of(r.number);
+        if (!cases.count(nn) && !builds.count(nn))
+            order.push_back(nn);
+        if (is_build_line(r))
+            builds[nn] = r;
+        else
+            cases[nn].push_back(r);
+    }
+    std::vector<CaseResult> out;
+    for (const std::string& nn : order) {
+        const std::vector<CaseResult>& chapter = cases[nn];
+        int max_score = 0, score = 0;
+        // (Graded one exercise alone, the chapter is that exercise: no chapter line.)
+        bool every_case_on_stubs = !chapter.empty() && std::any_of(chapter.begin(), chapter.end(), [&](const CaseResult& r) {
+                                       return r.number != chapter.front().number;
+                                   });
+        for (const CaseResult& r : chapter) {
+            max_score += r.max_score;
+            score += r.score;
+            every_case_on_stubs = every_case_on_stubs && !r.passed && !r.stubs.empty();
+        }
+        if (builds.count(nn)) {
+            CaseResult line = builds[nn];
+            line.number = nn;
+            line.max_score = max_score;
+            line.score = 0;
+            line.passed = max_score == 0;
+            out.push_back(line);
+            continue;
+        }
+        if (every_case_on_stubs) {
+            CaseResult line;
+            line.number = nn;
+            line.name = "chapter " + nn + untouched_words;
+            line.max_score = max_score;
+            line.output = "every case ran a stub you were handed; start with " + grep_hint(nn + ".1");
+            out.push_back(line);
+            continue;
+        }
+        // An exercise still its stub, or waiting for one: its failing cases become one line,
+        // where the first of them was.
+        std::map<std::string, size_t> stub_line;  // exercise -> index in out
+        for (const CaseResult& r : chapter) {
+            const std::string verdict = stub_verdict(r);
+            if (verdict.empty()) {
+                out.push_back(r);
+                continue;
+            }
+            const auto at = stub_line.find(r.number);
+            if (at != stub_line.end()) {
+                CaseResult& line = out[at->second];
+                line.max_score += r.max_score;
+                if (ran_stub(r, r.number))  // its own stub outranks another's
+                    line.name = verdict;
+                continue;
+            }
+            CaseResult line;
+            line.number = r.number;
+            line.name = verdict;
+            line.max_score = r.max_score;
+            line.stubs = r.stubs;
+            line.output = "to find it: " + grep_hint(r.stubs.substr(0, r.stubs.find(' ')));
+            stub_line[r.number] = out.size();
+            out.push_back(line);
+        }
+    }
+    return out;
+}
+
+std::vector<ChapterMark> chapter_marks(const std::vector<CaseResult>& summarized)
+{
+    std::vector<ChapterMark> marks;
+    for (const CaseResult& r : summarized) {
+        const std::string nn = chapter_of(r.number);
+        if (marks.empty() || marks.back().chapter != nn)
+            marks.push_back(ChapterMark{nn, 0, 0, ""});
+        ChapterMark& m = marks.back();
+        m.score += r.score;
+        m.max_score += r.max_score;
+        std::string mark;
+        if (r.number == nn && starts_with(r.name, missing_words))
+            mark = "no file";
+        else if (r.number == nn && r.name.find(untouched_words) != std::string::npos)
+            mark = "untouched";
+        else if (r.number == nn)
+            mark = "does not compile";
+        else if (r.name == r.number + stub_words)
+            mark = "stub " + r.number;
+        else if (starts_with(r.output, stopped_mark))
+            mark = "stopped " + r.number;
+        else if (starts_with(r.output, crashed_mark))
+            mark = "crashed " + r.number;
+        if (!mark.empty())
+            m.marks += (m.marks.empty() ? "" : ", ") + mark;
+    }
+    return marks;
+}
+
+}  // namespace rt::grader

@@ -1,0 +1,36 @@
+// What a student reads first. A chapter that did not compile, or that is still the handed-out
+// stubs, is one line; an exercise that is still its stub, or whose cases run another's stub, is one
+// line; every other case is as graded. The points are the same before and after: a line that stands for several cases carries
+// their maximum.
+#pragma once
+
+#include "tests/grader/points.hpp"
+
+#include <string>
+#include <vector>
+
+namespace rt::grader {
+
+// How a case that did not report ends its output: the case's process was stopped, or crashed.
+constexpr const char* stopped_mark = "stopped: ";
+constexpr const char* crashed_mark = "crashed: ";
+
+// The graded cases as the report shows them. `NN.build` lines (a chapter that did not compile,
+// written by grade.cmake) stand for their chapter's cases.
+std::vector<CaseResult> summarize(const std::vector<CaseResult>& results);
+
+// For a case that failed while a handed-out stub ran, the one line that says so ("07.3 is still
+// the handed-out stub", or "07.5 cannot be graded yet: it runs 07.4, ..."); empty for any other.
+std::string stub_verdict(const CaseResult& r);
+
+// One chapter of a summarized grade, as the class page shows it: its points, and what an
+// instructor should look at ("no file", "does not compile", "untouched", "stubs: 07.3",
+// "stopped: 07.2"), empty when nothing.
+struct ChapterMark {
+    std::string chapter;
+    int score = 0, max_score = 0;
+    std::string marks;
+};
+std::vector<ChapterMark> chapter_marks(const std::vector<CaseResult>& summarized);
+
+}  // namespace rt::grader
