@@ -8,7 +8,7 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 execute_process(COMMAND "${GRADER}" --results "${WORK}/01.results" --artifacts "${WORK}/pictures"
   OUTPUT_QUIET ERROR_QUIET)
-execute_process(COMMAND "${REPORT}" --html "${WORK}/report.html" --title "y flipped" "${WORK}/01.results"
+execute_process(COMMAND "${REPORT}" --html "${WORK}/report.html" --json "${WORK}/results.json" --title "y flipped" "${WORK}/01.results"
   RESULT_VARIABLE rc OUTPUT_QUIET)
 if(NOT rc EQUAL 0 OR NOT EXISTS "${WORK}/report.html")
   message(FATAL_ERROR "grade_report wrote no report (${rc})")
@@ -33,6 +33,13 @@ list(LENGTH all_images a)
 if(NOT html MATCHES "<h1>y flipped: [0-9]+ / [1-9][0-9]* points</h1>" OR n EQUAL 0 OR NOT f EQUAL n OR NOT i EQUAL 3 OR NOT p EQUAL 3 OR NOT a EQUAL 3)
   message(FATAL_ERROR "the report should show the points, ${n} failed cases (it shows ${f}) and the picture case's "
     "three images embedded (it has ${i} of ${a})")
+endif()
+# Gradescope shows the student the same images: the picture case's output is HTML with them embedded.
+file(READ "${WORK}/results.json" json)
+string(REGEX MATCHALL "<img alt=\\\\\"(expected|actual|difference)\\\\\" src=\\\\\"data:image/png" json_images "${json}")
+list(LENGTH json_images j)
+if(NOT j EQUAL 3 OR NOT json MATCHES "\"output_format\": \"html\"")
+  message(FATAL_ERROR "results.json should give the picture case's output as HTML with its three images (${j}):\n${json}")
 endif()
 find_program(CHROMIUM NAMES chromium chromium-browser NO_CACHE)
 if(CHROMIUM)

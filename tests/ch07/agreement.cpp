@@ -12,7 +12,7 @@ using namespace rt::grader::agreement;
 
 namespace {
 
-const Build grid = [](const Objects& objects, float lambda) { return std::make_unique<UniformGrid>(objects, lambda); };
+const Build grid{"the grid", [](const Objects& objects, float lambda) { return std::make_unique<UniformGrid>(objects, lambda); }};
 
 }  // namespace
 

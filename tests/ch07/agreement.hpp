@@ -20,16 +20,24 @@ struct Disagreement {
 
 inline std::string answer(bool found, const ObjectHit& h) { return found ? show(h) : "no hit"; }
 
-// What a test builds from a scene's objects at a density: the accelerator under test.
-using Build = std::function<std::unique_ptr<Accelerator>(const Objects&, float lambda)>;
+// What a test builds from a scene's objects at a density: the accelerator under test, and how a
+// failure names it ("the grid", "the BVH").
+using BuildFn = std::function<std::unique_ptr<Accelerator>(const Objects&, float lambda)>;
+struct Build {
+    std::string structure;
+    BuildFn make;
+};
 
 // `rays` seeded rays: half from the view's eye into its field of view, half from points in and
 // around the scene's box in any direction, some with a range that ends early.
 inline void compare(const Build& build, const LitScene& scene, const NffView& view, float lambda, int rays, std::uint64_t seed, Disagreement& d)
 {
     const Objects objects = objects_of(scene, lit_tests);
-    const std::unique_ptr<Accelerator> built = build(objects, lambda);
-    const Accelerator& grid = *built;
+    const std::unique_ptr<Accelerator> built = [&] {
+        const WorkingOn on([&] { return "building " + build.structure + " over " + std::to_string(objects.size()) + " objects"; });
+        return build.make(objects, lambda);
+    }();
+    const Accelerator& structure = *built;
     Bounds box;
     for (int k = 0; k < objects.size(); ++k)
         box.grow(objects.bounds(k));
@@ -50,18 +58,24 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
             ray = {box.min - 0.25f * e + 1.5f * e * vec3(u(), u(), u()), glm::normalize(dir)};
         }
         const Interval range{u() < 0.5f ? 0.0f : 1e-4f, u() < 0.2f ? glm::length(e) * u() : infinity};
+        const WorkingOn on([&] {
+            std::ostringstream s;
+            s << show(ray) << ", t in (" << range.min << ", " << range.max << "), lambda " << lambda << ", "
+              << objects.size() << " objects, through " << build.structure;
+            return s.str();
+        });
         ObjectHit want, got;
         const bool want_found = brute_force().closest(ray, range, objects, want);
-        const bool got_found = grid.closest(ray, range, objects, got);
+        const bool got_found = structure.closest(ray, range, objects, got);
         const bool want_any = brute_force().any(ray, range, objects);
-        const bool got_any = grid.any(ray, range, objects);
+        const bool got_any = structure.any(ray, range, objects);
         ++d.rays;
         const bool same = want_found == got_found && (!want_found || (want.object == got.object && want.t == got.t));
         if (!same || want_any != got_any) {
             if (d.wrong++ == 0) {
                 std::ostringstream s;
                 s << show(ray) << ", t in (" << range.min << ", " << range.max << "), lambda " << lambda
-                  << ": brute force finds " << answer(want_found, want) << " (any-hit " << want_any << "), the grid "
+                  << ": brute force finds " << answer(want_found, want) << " (any-hit " << want_any << "), " << build.structure << ' '
                   << answer(got_found, got) << " (any-hit " << got_any << ")";
                 d.first = s.str();
             }

@@ -14,7 +14,8 @@ using namespace rt::grader::agreement;
 
 namespace {
 
-const Build mailboxed = [](const Objects& objects, float lambda) { return std::make_unique<MailboxGrid>(objects, lambda); };
+const Build mailboxed{"the grid with mailboxes",
+                      [](const Objects& objects, float lambda) { return std::make_unique<MailboxGrid>(objects, lambda); }};
 
 std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
 

@@ -12,7 +12,8 @@ using namespace rt::grader::agreement;
 namespace {
 
 // The agreement tests' densities times 100: 30 to 900 cells per object.
-const Build hashed = [](const Objects& objects, float lambda) { return std::make_unique<HashedGrid>(objects, 100.0f * lambda); };
+const Build hashed{"the hashed grid",
+                   [](const Objects& objects, float lambda) { return std::make_unique<HashedGrid>(objects, 100.0f * lambda); }};
 
 }  // namespace
 

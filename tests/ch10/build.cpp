@@ -14,9 +14,12 @@ Bounds box(const point3& lo, const point3& hi) { return {lo, hi}; }
 
 void check_cost(const Bounds& parent, const Bounds& l, int nl, const Bounds& r, int nr, float expected, const char* why)
 {
+    std::ostringstream call;
+    call << "sah_cost(parent " << show(parent) << ", left " << show(l) << " with " << nl << ", right " << show(r) << " with "
+         << nr << ")";
+    const WorkingOn on([&] { return call.str(); });
     const float got = sah_cost(parent, l, nl, r, nr);
-    INFO("sah_cost(parent " << show(parent) << ", left " << show(l) << " with " << nl << ", right " << show(r) << " with "
-         << nr << "): got " << got << ", expected " << expected << ": " << why);
+    INFO(call.str() << ": got " << got << ", expected " << expected << ": " << why);
     CHECK(std::abs(got - expected) <= 1e-6f * std::max(1.0f, expected));
 }
 
@@ -77,10 +80,11 @@ void check_best_split(const Bounds& parent, const std::vector<int>& counts, int 
                       const char* why)
 {
     const std::vector<SahBin> bins = unit_bins(counts);
-    const SahSplit got = best_split(parent, bins);
     std::ostringstream shown;
     for (const int c : counts)
         shown << c << ' ';
+    const WorkingOn on([&] { return "best_split of bins along x holding " + shown.str() + "objects"; });
+    const SahSplit got = best_split(parent, bins);
     INFO("bins along x holding " << shown.str() << "objects; each plane's cost: " << plane_costs(parent, bins)
          << ". Got the plane after bin " << got.split << " at cost " << got.cost << ", expected after bin "
          << expected_split << " at " << expected_cost << ": " << why);

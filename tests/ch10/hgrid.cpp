@@ -52,14 +52,14 @@ HGrid two_levels(const std::vector<std::uint32_t>& in_root_cell0, const std::vec
     return h;
 }
 
-const Build hgrid = [](const Objects& objects, float lambda) {
-    // Small leaves and a deep limit, so the kit's small scenes get grids within grids.
-    HGridSettings s;
-    s.lambda = lambda;
-    s.leaf_size = 2;
-    s.max_depth = 3;
-    return std::make_unique<HGridAccel>(objects, s);
-};
+// Small leaves and a deep limit, so the kit's small scenes get grids within grids.
+const Build hgrid{"the hierarchy of grids", [](const Objects& objects, float lambda) {
+                      HGridSettings s;
+                      s.lambda = lambda;
+                      s.leaf_size = 2;
+                      s.max_depth = 3;
+                      return std::make_unique<HGridAccel>(objects, s);
+                  }};
 
 }  // namespace
 

@@ -34,12 +34,12 @@ Bvh two_leaves()
     return b;
 }
 
-const Build bvh = [](const Objects& objects, float) { return std::make_unique<BvhAccel>(objects); };
-const Build median = [](const Objects& objects, float) {
-    BvhSettings s;
-    s.split = BvhSplit::median;
-    return std::make_unique<BvhAccel>(objects, s);
-};
+const Build bvh{"the BVH", [](const Objects& objects, float) { return std::make_unique<BvhAccel>(objects); }};
+const Build median{"the BVH split at the median", [](const Objects& objects, float) {
+                       BvhSettings s;
+                       s.split = BvhSplit::median;
+                       return std::make_unique<BvhAccel>(objects, s);
+                   }};
 
 }  // namespace
 

@@ -64,7 +64,7 @@ int main(int argc, char** argv)
     }
     std::cout << "  total" << std::setw(20) << score << " / " << max_score << '\n';
     if (!json.empty()) {
-        if (!write_gradescope_json(json, results))
+        if (!write_gradescope_json(json, results, case_output_html))
             return std::cerr << "grade_report: " << json << ": cannot write\n", 2;
         std::cout << "wrote " << json << '\n';
     }

@@ -24,6 +24,7 @@
 
 #include "tests/grader/child_process.hpp"
 #include "tests/grader/freshness.hpp"
+#include "tests/grader/graded.hpp"
 #include "tests/grader/picture.hpp"
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
@@ -105,6 +106,19 @@ public:
         const Catch::AssertionResult& a = stats.assertionResult;
         if (a.isOk())
             return;
+        if (a.getResultType() == Catch::ResultWas::FatalErrorCondition) {
+            // The student's code crashed: what the case was working on, if it said, and where.
+            std::ostringstream out;
+            out << crashed_mark << a.getMessage() << '\n';
+            if (working_on_now && *working_on_now)
+                out << "while working on " << (*working_on_now)() << '\n';
+            for (const Catch::MessageInfo& m : stats.infoMessages)
+                if (m.message != a.getMessage())
+                    out << m.message << '\n';
+            out << "  after the check at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
+            current_.output = out.str() + current_.output;
+            return;
+        }
         // A case's description of its input (INFO) is said once for the checks that fail on it.
         std::string info;
         for (const Catch::MessageInfo& m : stats.infoMessages)

@@ -52,7 +52,33 @@ tr.fail td.points{background:#fdd}tr.ok td.points{background:#dfd}pre{white-spac
 figure{display:inline-block;margin:0.3em 0.6em 0 0}figure img{width:18em;image-rendering:pixelated;border:1px solid #999}
 figcaption{font-size:85%;text-align:center})";
 
+// The pictures a case's output names ("expected:   build/.../x.expected.png"), as figures with the
+// images embedded; empty when it names none that exist.
+std::string picture_figures(const std::string& output)
+{
+    static const std::regex picture(R"((expected|actual|difference): +(\S+\.png))");
+    std::ostringstream out;
+    std::set<std::string> shown;  // an output may name a picture twice
+    for (auto m = std::sregex_iterator(output.begin(), output.end(), picture); m != std::sregex_iterator(); ++m) {
+        if (!shown.insert((*m)[2]).second)
+            continue;
+        const std::string uri = image_uri((*m)[2]);
+        if (!uri.empty())
+            out << "<figure><img alt=\"" << (*m)[1] << "\" src=\"" << uri << "\"><figcaption>" << (*m)[1]
+                << "</figcaption></figure>";
+    }
+    return out.str();
+}
+
 }  // namespace
+
+std::string case_output_html(const CaseResult& r)
+{
+    const std::string figures = picture_figures(r.output);
+    if (figures.empty())
+        return "";
+    return "<pre>" + escape_xml(r.output) + "</pre>" + figures;
+}
 
 bool write_html_report(const std::string& path, const std::string& title, std::vector<CaseResult> results)
 {
@@ -76,7 +102,6 @@ bool write_html_report(const std::string& path, const std::string& title, std::v
         out << "<tr><td><a href=\"#ch" << chapter << "\">chapter " << chapter << "</a></td><td>" << points.first << " / "
             << points.second << "</td></tr>\n";
     out << "</table>\n";
-    static const std::regex picture(R"((expected|actual|difference): +(\S+\.png))");
     std::string chapter;
     for (const CaseResult& r : results) {
         if (r.number.substr(0, 2) != chapter) {
@@ -88,18 +113,8 @@ bool write_html_report(const std::string& path, const std::string& title, std::v
         }
         out << "<tr class=\"" << (r.passed ? "ok" : "fail") << "\"><td>" << escape_xml(r.number) << "</td><td>"
             << escape_xml(r.name);
-        if (!r.passed && !r.output.empty()) {
-            out << "<pre>" << escape_xml(r.output) << "</pre>";
-            std::set<std::string> shown;  // an output may name a picture twice
-            for (auto m = std::sregex_iterator(r.output.begin(), r.output.end(), picture); m != std::sregex_iterator(); ++m) {
-                if (!shown.insert((*m)[2]).second)
-                    continue;
-                const std::string uri = image_uri((*m)[2]);
-                if (!uri.empty())
-                    out << "<figure><img alt=\"" << (*m)[1] << "\" src=\"" << uri << "\"><figcaption>" << (*m)[1]
-                        << "</figcaption></figure>";
-            }
-        }
+        if (!r.passed && !r.output.empty())
+            out << "<pre>" << escape_xml(r.output) << "</pre>" << picture_figures(r.output);
         out << "</td><td class=\"points\">" << r.score << " / " << r.max_score << "</td></tr>\n";
     }
     if (!chapter.empty())

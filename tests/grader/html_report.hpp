@@ -13,6 +13,11 @@ namespace rt::grader {
 
 bool write_html_report(const std::string& path, const std::string& title, std::vector<CaseResult> results);
 
+// A picture case's output as HTML, its expected, actual and difference images embedded: what a
+// course platform shows a student who cannot open the grading machine's files. Empty for a case
+// whose output names no picture.
+std::string case_output_html(const CaseResult& result);
+
 // Appends a student's row to the class page's table (a header row first when the file is new):
 // their total, linking to students/NAME/report.html, then each chapter's points with its marks
 // (a missing file, a compile failure, untouched stubs, a stopped or crashed case) flagged.

@@ -225,7 +225,8 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
     return true;
 }
 
-bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results)
+bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results,
+                           const std::function<std::string(const CaseResult&)>& as_html)
 {
     int score = 0;
     for (const CaseResult& r : results)
@@ -236,7 +237,12 @@ bool write_gradescope_json(const std::string& path, const std::vector<CaseResult
         const CaseResult& r = results[k];
         out << (k ? "," : "") << "\n    {\"name\": \"" << escape_json(r.name) << "\", \"number\": \""
             << escape_json(r.number) << "\", \"score\": " << r.score << ", \"max_score\": " << r.max_score
-            << ", \"output\": \"" << escape_json(r.output) << "\"}";
+            << ", \"output\": \"";
+        const std::string html = as_html && !r.passed ? as_html(r) : "";
+        if (html.empty())
+            out << escape_json(r.output) << "\"}";
+        else
+            out << escape_json(html) << "\", \"output_format\": \"html\"}";
     }
     out << "\n  ]\n}\n";
     return static_cast<bool>(out);

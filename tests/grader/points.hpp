@@ -3,6 +3,7 @@
 // grade_report.
 #pragma once
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -38,7 +39,9 @@ bool append_result(const std::string& path, const CaseResult& result);
 bool read_results(const std::string& path, std::vector<CaseResult>& results);
 
 // Gradescope's autograder format: {"score", "tests": [{"name","number","score","max_score","output"}]}.
-bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results);
+// A case for which `as_html` gives HTML is written with that output and "output_format": "html".
+bool write_gradescope_json(const std::string& path, const std::vector<CaseResult>& results,
+                           const std::function<std::string(const CaseResult&)>& as_html = {});
 bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& results);
 
 // Appends `student,chNN...,total` to a CSV gradebook, with a header when the file is new.

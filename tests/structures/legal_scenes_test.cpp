@@ -19,7 +19,7 @@ namespace {
 struct Structure {
     std::string name;
     float lambda;
-    agreement::Build build;
+    agreement::BuildFn build;
 };
 
 std::vector<Structure> structures()
@@ -57,12 +57,12 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
         // Brute force's work on the rays, then the structure's, from the counters.
         reset_counters();
         agreement::Disagreement brute_d;
-        agreement::compare([](const Objects&, float) { return std::make_unique<BruteForce>(); }, scene, view, s.lambda,
+        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene, view, s.lambda,
                            rays, 7, brute_d);
         const std::uint64_t both_brute = counted(total_counts(), Counter::intersection_tests);
         reset_counters();
         agreement::Disagreement d;
-        agreement::compare(s.build, scene, view, s.lambda, rays, 7, d);
+        agreement::compare({"the " + s.name, s.build}, scene, view, s.lambda, rays, 7, d);
         const std::uint64_t with_structure = counted(total_counts(), Counter::intersection_tests);
         // compare() asks brute force too: the structure's own tests are the difference.
         const double brute_tests = static_cast<double>(both_brute) / 2.0;
