@@ -55,7 +55,7 @@ GRADED_TEST("occluded: an occluder beyond the light or behind the point does not
     check({scene_of({}, square_facing_up({0, 9.5f, 0}, 5)), ground, overhead, 0.0f, true, "the square at y = 9.5 lies before the light"});
 }
 
-GRADED_TEST("occluded: stops at the first occluder it finds (1 intersection test when all block), tests all when none does", "04.2", 3)
+GRADED_TEST("occluded: stops at the first occluder of any kind (1 test when all block, 11 when only the 11th of 21 does), tests all when none does", "04.2", 3)
 {
     // Twenty spheres, and twenty squares, all across the feeler: any one of them answers.
     std::vector<Sphere> spheres;
@@ -75,6 +75,7 @@ GRADED_TEST("occluded: stops at the first occluder it finds (1 intersection test
         CHECK(got);
         CHECK(tests == 1);
     }
+    const std::vector<Sphere> spheres_across = spheres;
     // Moved aside, none blocks, and each must be asked.
     for (Sphere& s : spheres)
         s.centre.x = 5.0f;
@@ -85,6 +86,29 @@ GRADED_TEST("occluded: stops at the first occluder it finds (1 intersection test
          << " after " << intersection_tests() << " intersection tests, expected not blocked after 20");
     CHECK_FALSE(got);
     CHECK(intersection_tests() == 20);
+
+    // Only the middle one of 21 spheres across: found after 11 tests, whichever end the search
+    // starts from (the first try misses here, unlike above).
+    std::vector<Sphere> one_across(21, Sphere{{5, 0, 0}, 0.2f});
+    for (int k = 0; k < 21; ++k)
+        one_across[k].centre.y = 0.4f + 0.45f * static_cast<float>(k);
+    one_across[10].centre.x = 0.0f;
+    reset_counters();
+    const bool middle = occluded(scene_of(one_across, {}), ground, overhead, 0.0f);
+    INFO("the feeler from " << show(ground) << " to " << show(overhead) << " past 21 spheres, only the 11th across it: got "
+         << show(middle) << " after " << intersection_tests() << " intersection tests, expected blocked after 11");
+    CHECK(middle);
+    CHECK(intersection_tests() == 11);
+
+    // Spheres and triangles together, all across: the first occluder of either kind ends the search,
+    // so one test, not one per kind.
+    reset_counters();
+    const bool mixed = occluded(scene_of(spheres_across, triangles), ground, overhead, 0.0f);
+    INFO("the feeler from " << show(ground) << " to " << show(overhead)
+         << " through 20 spheres and 20 triangles, all across it: got " << show(mixed) << " after "
+         << intersection_tests() << " intersection tests, expected blocked after 1");
+    CHECK(mixed);
+    CHECK(intersection_tests() == 1);
 }
 
 GRADED_TEST("occluded: a cylinder or a cone from a scene file between the point and the light blocks it", "04.2", 2)

@@ -30,6 +30,7 @@ GRADED_TEST("grid_resolution: a long box gets cubic cells, more of them along it
     // V = 8 x 1 x 1 = 8, 64 cells: side cbrt(8 / 64) = 0.5.
     check(box({0, 0, 0}, {8, 1, 1}), 64, 1.0f, {16, 2, 2}, "cells of side 0.5: 16 x 2 x 2 = 64");
     check(box({0, 0, 0}, {1, 4, 2}), 8, 1.0f, {1, 4, 2}, "cells of side 1");
+    check(box({0, 0, 0}, {1, 4, 2}), 64, 1.0f, {2, 8, 4}, "V = 8 and 64 cells: side cbrt(8 / 64) = 0.5");
     // Rounded to the nearest count: 10 / cbrt(1000 / 1200) = 10.6 -> 11.
     check(box({0, 0, 0}, {10, 10, 10}), 1200, 1.0f, {11, 11, 11}, "10.6 cells per axis round to 11");
 }
@@ -40,6 +41,12 @@ GRADED_TEST("grid_resolution: a flat scene spreads its cells over its area; an a
     check(box({0, 0, 0}, {4, 0.01f, 4}), 16, 1.0f, {4, 1, 4},
           "a floor 0.01 thick is thinner than a cell: it counts as flat, 16 cells over the area");
     check(box({0, 0, 0}, {0, 0, 6}), 3, 2.0f, {1, 1, 6}, "a line: 6 cells along its length");
+    // Above, the area (or length) equals lambda N, so the cell side is 1 whatever root is taken.
+    // Here it is not: a square root for a floor, none for a line.
+    check(box({0, 0, 0}, {4, 0, 4}), 64, 1.0f, {8, 1, 8}, "a floor with 64 objects: side sqrt(16 / 64) = 0.5");
+    check(box({0, 0, 0}, {4, 0.01f, 4}), 64, 1.0f, {8, 1, 8},
+          "a thin floor with 64 objects: flat, so side sqrt(16 / 64) = 0.5, not a cube root");
+    check(box({0, 0, 0}, {0, 0, 6}), 12, 1.0f, {1, 1, 12}, "a line with 12 objects: side 6 / 12 = 0.5");
 }
 
 GRADED_TEST("grid_resolution: at least 1 and at most max_cells_per_axis cells per axis; no objects, 1 x 1 x 1", "07.1", 3)
