@@ -1,7 +1,8 @@
 # The Gradescope package, run as Gradescope would run it, in a throw-away copy of its layout:
-# the package unpacked into autograder/source, a submission (chapter 01's solution, in a folder
-# of its own as students upload them) in autograder/submission, then run_autograder, grading
-# chapter 01 only. results.json must hold chapter 01's cases, at full points.
+# the package unpacked into autograder/source, setup.sh (which builds the kit once), a submission
+# (chapter 01's solution, in a folder of its own as students upload them) in autograder/submission,
+# then run_autograder, grading chapter 01 only. The submission must compile only its own file, and
+# results.json must hold chapter 01's cases, at full points.
 #   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P package_test.cmake
 file(REMOVE_RECURSE "${WORK}/autograder")
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}"
@@ -17,13 +18,38 @@ foreach(file setup.sh run_autograder CMakeLists.txt tests/grade.cmake)
     message(FATAL_ERROR "the package has no ${file} at its root")
   endif()
 endforeach()
+# setup.sh, as Gradescope runs it when it builds the image (the packages are this machine's).
+string(TIMESTAMP t0 "%s")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env "AUTOGRADER_ROOT=${root}" "RT_GRADE_CHAPTERS=01" RT_SKIP_PACKAGES=1
+    bash "${root}/source/setup.sh"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+string(TIMESTAMP t1 "%s")
+if(NOT rc EQUAL 0 OR NOT out MATCHES "the kit was built in")
+  message(FATAL_ERROR "setup.sh failed (${rc}):\n${out}")
+endif()
+file(STRINGS "${root}/work/build/.ninja_log" built)
+list(LENGTH built setup_log_lines)
 file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${root}/submission/my_work")
 execute_process(COMMAND "${CMAKE_COMMAND}" -E env "AUTOGRADER_ROOT=${root}" "RT_GRADE_CHAPTERS=01"
     bash "${root}/source/run_autograder"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+string(TIMESTAMP t2 "%s")
 if(NOT rc EQUAL 0 OR NOT EXISTS "${root}/results/results.json")
   message(FATAL_ERROR "run_autograder failed (${rc}) or wrote no results:\n${out}")
 endif()
+# The submission compiled its own file and nothing else of the kit: the objects ninja built after
+# setup.sh (its log gains a line per output built) are that file's alone.
+file(STRINGS "${root}/work/build/.ninja_log" built)
+list(LENGTH built n_built)
+list(SUBLIST built ${setup_log_lines} -1 built_for_submission)
+list(FILTER built_for_submission INCLUDE REGEX "\\.o(bj)?\t")
+list(LENGTH built_for_submission n_compiled)
+if(NOT n_compiled EQUAL 1 OR NOT built_for_submission MATCHES "01_ray_casting\\.cpp\\.o")
+  message(FATAL_ERROR "a submission should compile only the student's file; it compiled ${n_compiled}:\n${built_for_submission}")
+endif()
+math(EXPR setup_s "${t1} - ${t0}")
+math(EXPR grade_s "${t2} - ${t1}")
+message(STATUS "setup.sh built the kit in ${setup_s} s; the submission was graded in ${grade_s} s")
 file(READ "${root}/results/results.json" json)
 string(REGEX MATCHALL "\"number\": \"01\\.[0-9A-Z]+\"" cases "${json}")
 string(REGEX MATCHALL "\"max_score\": [0-9]+" maxima "${json}")
