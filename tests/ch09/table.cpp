@@ -49,7 +49,9 @@ GRADED_TEST("find_cell: the cell whose key matches, among the cells that share i
         const HashedCell* c = find_cell(t, p, static_cast<std::uint32_t>(p) % t.M);
         INFO("find_cell(p = " << p << ", which the table does not hold; bucket " << p % 5 << "): got "
              << (c ? "the cell with key " + std::to_string(c->p) : std::string("nothing")) << ", expected nothing: "
-             << (p == 18 ? "cell 18 shares bucket 3 with 3, 8 and 13, but is none of them" : "an empty bucket"));
+             << (p == 18  ? "cell 18 shares bucket 3 with 3, 8 and 13, but is none of them"
+                 : p == 2 ? "cell 2 shares bucket 2 with cell 7, but is not it"
+                          : "an empty bucket"));
         CHECK(c == nullptr);
     }
 }

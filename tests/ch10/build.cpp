@@ -56,7 +56,7 @@ std::vector<SahBin> unit_bins(const std::vector<int>& counts)
 }
 
 // Every plane's cost, worked out here from the SAH (not from the student's sah_cost), so a failure
-// shows the whole table: "after bin 0: 4.57, after bin 1: 4.57, after bin 2: 8.93".
+// shows the whole table: "after bin 0: 4.57, after bin 1: 4.57, after bin 2: 9.01".
 std::string plane_costs(const Bounds& parent, const std::vector<SahBin>& bins)
 {
     std::ostringstream table;
