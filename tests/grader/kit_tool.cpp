@@ -1,8 +1,10 @@
-// The kit's maintenance tool, three verbs:
+// The kit's maintenance tool, four verbs:
 //
 //   kit_tool cut SOLUTION EXERCISE        write the exercise file cut from an annotated solution
 //   kit_tool check-cut SOLUTION EXERCISE  exit 1 (saying where) when EXERCISE is not what cut makes
 //   kit_tool mutate MUTANT SOLUTION OUT   apply a mutant (a common mistake) to a solution
+//   kit_tool share SOLUTION               how much of each exercise's solution its stub's comments
+//                                         already spell out (below)
 //
 // Cutting: the lines from `// SOLUTION BEGIN` to `// SOLUTION END` are dropped, and a line
 // `// STUB text` becomes `text` at the same indentation. So an exercise cannot drift from its
@@ -11,8 +13,11 @@
 // A mutant file: `#` comment lines saying what mistake it is, then one or more pairs of blocks,
 // `---` followed by lines to find in the solution (exactly once) and `+++` followed by the lines
 // that replace them.
+#include <cctype>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -150,6 +155,92 @@ void mutate(const std::string& mutant_path, const std::string& solution_path, co
     write_text(out_path, text);
 }
 
+// The tokens of C++ code or of a comment: names, numbers and single punctuation characters, less
+// those that say nothing of the answer (declarations' types, `std`, `;` and braces).
+std::vector<std::string> tokens(const std::string& text)
+{
+    static const std::set<std::string> ignored = {"const", "auto", "float", "int", "bool", "double", "std", "return",
+                                                  "static_cast", ";", "{", "}", ":"};
+    std::vector<std::string> out;
+    for (size_t k = 0; k < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[k]);
+        size_t end = k + 1;
+        if (std::isalpha(c) || c == '_')
+            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
+                ++end;
+        else if (std::isdigit(c))
+            while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '.'))
+                ++end;
+        else if (std::isspace(c)) {
+            ++k;
+            continue;
+        }
+        const std::string t = text.substr(k, end - k);
+        if (!ignored.count(t))
+            out.push_back(t);
+        k = end;
+    }
+    return out;
+}
+
+std::set<std::string> shingles(const std::vector<std::string>& t, size_t n)
+{
+    std::set<std::string> out;
+    for (size_t k = 0; k + n <= t.size(); ++k) {
+        std::string s;
+        for (size_t j = 0; j < n; ++j)
+            s += t[k + j] + ' ';
+        out.insert(s);
+    }
+    return out;
+}
+
+// For each exercise: the share of its solution's code fragments (runs of 3 tokens) that stand in its
+// stub's comments, the comment lines from `// EXERCISE NN.k` to `// SOLUTION BEGIN`; and the same
+// for every exercise of the file together. A stub that states only the contract shares little; one
+// that lists the code to type shares most of it.
+void share(const std::string& solution_path)
+{
+    const std::vector<std::string> lines = read_lines(solution_path);
+    std::string exercise, comments, code;
+    bool in_stub = false, in_solution = false;
+    size_t all_fragments = 0, all_shared = 0;
+    const auto report = [&] {
+        const std::set<std::string> said = shingles(tokens(comments), 3), done = shingles(tokens(code), 3);
+        size_t shared = 0;
+        for (const std::string& f : done)
+            shared += said.count(f);
+        all_fragments += done.size();
+        all_shared += shared;
+        std::cout << "  " << exercise << std::setw(5) << (done.empty() ? 0 : 100 * shared / done.size()) << "%  (" << shared
+                  << " of " << done.size() << " fragments)\n";
+    };
+    for (const std::string& line : lines) {
+        const std::string text = trim_left(line);
+        if (text.rfind("// EXERCISE ", 0) == 0) {
+            exercise = text.substr(12, text.find_first_of(": ", 12) - 12);
+            comments.clear();
+            code.clear();
+            in_stub = true;
+        }
+        if (text == "// SOLUTION BEGIN") {
+            in_stub = false;
+            in_solution = true;
+        } else if (text == "// SOLUTION END") {
+            in_solution = false;
+            if (!exercise.empty())
+                report();
+            exercise.clear();
+        } else if (in_stub && text.rfind("//", 0) == 0) {
+            comments += text.substr(2) + '\n';
+        } else if (in_solution && text.rfind("//", 0) != 0) {
+            code += text.substr(0, text.find("//")) + '\n';
+        }
+    }
+    std::cout << "  all  " << std::setw(5) << (all_fragments ? 100 * all_shared / all_fragments : 0) << "%  (" << all_shared
+              << " of " << all_fragments << " fragments)\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -162,9 +253,11 @@ int main(int argc, char** argv)
             check_cut(args[1], args[2]);
         else if (args.size() == 4 && args[0] == "mutate")
             mutate(args[1], args[2], args[3]);
+        else if (args.size() == 2 && args[0] == "share")
+            share(args[1]);
         else {
             std::cerr << "usage: kit_tool cut SOLUTION EXERCISE | check-cut SOLUTION EXERCISE | "
-                         "mutate MUTANT SOLUTION OUT\n";
+                         "mutate MUTANT SOLUTION OUT | share SOLUTION\n";
             return 2;
         }
     } catch (const Failure& f) {

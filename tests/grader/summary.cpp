@@ -126,7 +126,8 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
             line.name = verdict;
             line.max_score = r.max_score;
             line.stubs = r.stubs;
-            line.output = "to find it: " + grep_hint(r.stubs.substr(0, r.stubs.find(' ')));
+            line.output = "to find it: " + grep_hint(r.stubs.substr(0, r.stubs.find(' '))) +
+                          "; to start: ./build/grade/hint " + r.stubs.substr(0, r.stubs.find(' '));
             stub_line[r.number] = out.size();
             out.push_back(line);
         }

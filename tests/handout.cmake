@@ -1,0 +1,43 @@
+# Writes the kit as handed out to students: without solutions/ and without the mutants (whose
+# lines are the solutions'), with each chapter's hints cut to the tiers the course allows.
+#
+#   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] -P tests/handout.cmake
+#
+# HINT_TIERS (default 3, all): the tiers of every chapters/NN_name/hints.md kept, 1 the idea, 2 the
+# trap, 3 the walk-through; 0 leaves the hints out. The grader and the programs build the same.
+get_filename_component(kit "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+if(NOT OUT)
+  message(FATAL_ERROR "handout: say where to write it: -D OUT=<folder>")
+endif()
+if(NOT DEFINED HINT_TIERS)
+  set(HINT_TIERS 3)
+endif()
+if(NOT HINT_TIERS MATCHES "^[0-3]$")
+  message(FATAL_ERROR "handout: HINT_TIERS is 0, 1, 2 or 3 (the tiers kept), not '${HINT_TIERS}'")
+endif()
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+foreach(entry CMakeLists.txt CMakePresets.json README.md .ci .devcontainer chapters common exercises tests)
+  if(EXISTS "${kit}/${entry}")
+    file(COPY "${kit}/${entry}" DESTINATION "${OUT}")
+  endif()
+endforeach()
+file(REMOVE_RECURSE "${OUT}/tests/mutants")
+file(GLOB hint_files "${OUT}/chapters/*/hints.md")
+foreach(hints IN LISTS hint_files)
+  if(HINT_TIERS EQUAL 0)
+    file(REMOVE "${hints}")
+    continue()
+  endif()
+  file(READ "${hints}" text)
+  # Each tier is one folded block; the ones above HINT_TIERS go.
+  math(EXPR first_cut "${HINT_TIERS} + 1")
+  foreach(tier RANGE ${first_cut} 3)
+    string(REGEX REPLACE "<details><summary>[0-9][0-9]\\.[0-9A-Za-z]+, tier ${tier}:[^<]*</summary>[^<]*(<[^/][^<]*|</[^d][^<]*)*</details>\n*" "" text "${text}")
+  endforeach()
+  if(HINT_TIERS LESS 3)
+    string(REGEX REPLACE "^(# [^\n]*\n)" "\\1\n(This handout keeps tiers 1 to ${HINT_TIERS} of each exercise's hints.)\n" text "${text}")
+  endif()
+  file(WRITE "${hints}" "${text}")
+endforeach()
+message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints: ${OUT}")
