@@ -1,9 +1,11 @@
 // Chapter 05, soft shadows: your exercises.
 //
-// Each function below says what to compute and gives a hint; its contract is documented in
+// Each function below states what to compute (not how); its contract is documented in
 // chapters/05_soft_shadows/05_soft_shadows.hpp and the lesson in that folder's README.md.
 // Each stub compiles and returns a harmless value, so the chapter's program always runs.
 // Check your work with:  cmake --build --preset grade --target check_05
+// Stuck? Hints in tiers you open one at a time: chapters/05_soft_shadows/hints.md, or
+// ./build/grade/hint 05.1 (tier 1, the idea), ./build/grade/hint 05.1 2 (the trap), ... 3 (the walk-through).
 //
 // This chapter builds on chapter 04: direct_light calls its local_shading (04.1) and its
 // shadow feeler (light_blocked, which calls your 04.2 and 04.3).
@@ -20,48 +22,47 @@ namespace rt {
 
 point3 point_on_rectangle(const AreaLight& light, sample2 u)
 {
-    // EXERCISE 05.1: u in [0, 1)^2 to the rectangle: stretch [0, 1) to [-1, 1) along each axis.
-    // Hint: light.centre + (2 u.x - 1) light.axis_u + (2 u.y - 1) light.axis_v.
+    // EXERCISE 05.1: u in [0, 1)^2 to a point of the rectangle light
+    // Return the point of the light that u stands for: each coordinate of u stretched from [0, 1) to
+    // [-1, 1) in units of the half-axes, so u = (0, 0) is the corner behind both axis_u and axis_v,
+    // u = (1/2, 1/2) the centre, and u.x runs along axis_u. Uniform u must give uniform points.
+    // Lesson: "Points on a rectangle (EXERCISE 05.1)".
+    // Stuck? hint 05.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("05.1", light.centre);
 }
 
 point3 point_on_disc(const AreaLight& light, sample2 u)
 {
-    // EXERCISE 05.2: Shirley and Chiu's concentric map, then onto the light.
-    // 1. Stretch u to the square [-1, 1]^2: a = 2 u.x - 1, b = 2 u.y - 1. At a = b = 0 return the
-    //    centre (step 2 would divide 0 by 0).
-    // 2. Each square around the centre, |a| = const or |b| = const, goes to a circle: when
-    //    |a| > |b|: r = a, phi = (pi/4) (b / a); otherwise r = b, phi = pi/2 - (pi/4) (a / b).
-    //    (r may be negative: that is the half-turn that puts the square's left and bottom halves
-    //    on the disc's left and bottom.)
-    // 3. The disc point (x, y) = (r cos phi, r sin phi); return centre + x axis_u + y axis_v.
+    // EXERCISE 05.2: u in [0, 1)^2 to a point of the disc light, by Shirley and Chiu's concentric map
+    // Return the light's centre moved by the disc point u stands for, in units of the half-axes (each
+    // as long as the radius). Area-preserving: uniform u give uniform points, spread over the whole
+    // disc to its rim and never beyond; never a NaN, even at the square's centre u = (1/2, 1/2).
+    // Lesson: "Points on a disc (EXERCISE 05.2)".
+    // Stuck? hint 05.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("05.2", light.centre);
 }
 
 sample2 stratified_sample(int k, int n, Rng& rng)
 {
-    // EXERCISE 05.3: sample k of an n x n jittered grid.
-    // 1. Its cell: column a = k % n, row b = k / n.
-    // 2. A uniform point inside: x = (a + rng.next_float()) / n, then y = (b + rng.next_float()) / n,
-    //    in that order (draw x's number first).
-    // 3. Clamp each to at most one_minus_epsilon: in float, (n - 1 + 0.99999994) / n can round to 1.
-    // Hint: static_cast<float>(a) before adding; std::min(x, one_minus_epsilon).
+    // EXERCISE 05.3: sample k of an n x n jittered grid
+    // Return a uniform point of cell k of the unit square cut into n x n cells, numbered along x
+    // first, row after row (k from 0 to n^2 - 1). Its two numbers come from rng, x's first; the point
+    // stays in [0, 1) even in the last cell with the jitter a hair below 1 (one_minus_epsilon).
+    // Lesson: "Stratified samples (EXERCISE 05.3)".
+    // Stuck? hint 05.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("05.3", sample2{0.5f, 0.5f});
 }
 
 color direct_light(const AreaLitScene& scene, const Ray& ray, const Hit& hit, const AreaLight& light,
                    const LightSampling& sampling, Rng& rng)
 {
-    // EXERCISE 05.4: one area light, N = sampling.samples feelers, each sample weighted by A / N.
-    // 1. m = scene.lit.material_of(hit.object); n = hit.n turned to face the eye (flip it when
-    //    n.ray.dir > 0); v = -ray.dir; the light's normal light_normal(light) and area light_area(light).
-    // 2. For k = 0 .. N - 1 (draw every sample, even those you then skip):
-    //    y = point_on_light(light, light_sample(k, sampling, rng)); to_light = y - hit.p, d2 its
-    //    squared length, l = to_light / sqrt(d2), cos_light = -(light normal . l).
-    //    Skip the sample when d2 = 0, n.l <= 0 or cos_light <= 0; then when
-    //    light_blocked(scene.lit, hit, y, FeelerSettings{}) (the feeler costs a ray: ask last).
-    //    Else add local_shading(m, n, v, l, light.radiance * (cos_light * A / (N d2))).
-    // Hint: the point light of chapter 04 is the case N = 1 with intensity L_e A and cos_light = 1.
+    // EXERCISE 05.4: the light one area light sends to the eye, with N = sampling.samples feelers
+    // Return the Monte Carlo estimate of the lesson's integral E, shaded by chapter 04's local_shading:
+    // N points on the light, drawn from this rng by the given light_samples.hpp, one feeler each,
+    // weighted for points uniform over the light's area. A sample behind the surface, on the
+    // light's dark side or at distance 0 adds nothing and sends no feeler; never a NaN.
+    // Lesson: "Monte Carlo: the estimator and its weight (EXERCISE 05.4)".
+    // Stuck? hint 05.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("05.4", color(0.0f));
 }
 

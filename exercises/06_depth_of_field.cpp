@@ -1,9 +1,11 @@
 // Chapter 06, depth of field: your exercises.
 //
-// Each function below says what to compute and gives a hint; its contract is documented in
+// Each function below states what to compute (not how); its contract is documented in
 // chapters/06_depth_of_field/06_depth_of_field.hpp and the lesson in that folder's README.md.
 // Each stub compiles and returns a harmless value, so the chapter's program always runs.
 // Check your work with:  cmake --build --preset grade --target check_06
+// Stuck? Hints in tiers you open one at a time: chapters/06_depth_of_field/hints.md, or
+// ./build/grade/hint 06.1 (tier 1, the idea), ./build/grade/hint 06.1 2 (the trap), ... 3 (the walk-through).
 //
 // This chapter builds on chapter 01 (primary_ray, the pinhole ray, which 06.3 calls); its
 // program and figure also use chapter 02's spheres and triangles and chapter 04's shading.
@@ -20,37 +22,34 @@ namespace rt {
 
 point2 concentric_disc(point2 square)
 {
-    // EXERCISE 06.1: Shirley and Chiu's concentric map, unit square -> unit disc.
-    // 1. Stretch [0, 1]^2 onto [-1, 1]^2: a = 2 square.x - 1, b = 2 square.y - 1.
-    // 2. The centre (a = b = 0) has no angle: return (0, 0) before dividing by a or b.
-    // 3. When |a| >= |b| (the left and right wedges): r = a, phi = (pi / 4) (b / a);
-    //    otherwise (top and bottom): r = b, phi = pi / 2 - (pi / 4) (a / b).
-    //    r keeps its sign, which puts the point in the opposite wedge when it is negative.
-    // 4. Return (r cos phi, r sin phi).
-    // Hint: quarter_pi is pi / 4; std::abs, std::cos and std::sin work on floats.
+    // EXERCISE 06.1: Shirley and Chiu's concentric map, unit square -> unit disc
+    // Return the point of the unit disc that square stands for: each square ring around the square's
+    // centre goes onto the circle of its half-side, walked at an even pace. So the map preserves area,
+    // puts the square's edges on the rim and its corners on the diagonals; the centre goes to (0, 0),
+    // never a NaN. Lesson: "Sampling the lens: an area-preserving map (EXERCISE 06.1)".
+    // Stuck? hint 06.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("06.1", point2(0.0f));
 }
 
 point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
 {
-    // EXERCISE 06.2: where the pinhole ray meets the plane of sharp focus.
-    // The plane lies F = lens.focus_distance in front of the eye, along -w. A unit step along the
-    // ray advances dir.(-w) toward it (the cosine of the ray's angle to the view direction), so the
-    // ray reaches it at t = F / (dir.(-w)), not at t = F.
-    // Hint: pinhole.at(t) is the point.
+    // EXERCISE 06.2: where the pinhole ray meets the plane of sharp focus
+    // Return the point of pinhole (from the eye, unit direction, in front of the camera) on the plane
+    // lens.focus_distance in front of the eye measured along -w, parallel to the window: a slanted ray
+    // travels farther than that to reach it. Lesson: "The focal point: along -w, not along the ray
+    // (EXERCISE 06.2)".
+    // Stuck? hint 06.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("06.2", pinhole.origin);
 }
 
 Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng& rng)
 {
-    // EXERCISE 06.3: the thin-lens ray through pixel position (x, y).
-    // 1. The pinhole ray: primary_ray(cam, x, y). With lens.aperture_radius == 0, return it as it
-    //    is, drawing nothing from rng (the lens formula below would round it differently).
-    // 2. The lens sample: s.x = rng.next_float(), then s.y = rng.next_float(), in that order, and
-    //    d = concentric_disc(s).
-    // 3. The lens point: cam.eye + R (d.x cam.u + d.y cam.v), R = lens.aperture_radius: the lens
-    //    lies in the camera's own u, v plane, whatever way the camera looks.
-    // 4. The ray from the lens point toward focal_point(cam, lens, pinhole), direction made unit.
+    // EXERCISE 06.3: the thin-lens ray through pixel position (x, y)
+    // Return the ray, unit direction, from a uniform point of the lens (radius lens.aperture_radius
+    // around the eye, in the camera's u, v plane) toward where the pixel's pinhole ray meets the plane
+    // of focus; the lens point comes from rng's next two numbers, the first for x. An aperture of 0
+    // returns primary_ray's ray bit for bit and draws nothing. Lesson: "The thin-lens ray (EXERCISE 06.3)".
+    // Stuck? hint 06.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("06.3", Ray{cam.eye, -cam.w});
 }
 

@@ -7,11 +7,13 @@
 // SOLUTION END
 // STUB // Chapter 07, the uniform grid: your exercises.
 // STUB //
-// STUB // Each function below says what to compute and gives a hint; its contract is documented in
+// STUB // Each function below states what to compute (not how); its contract is documented in
 // STUB // chapters/07_uniform_grid/07_uniform_grid.hpp and the lesson in that folder's README.md.
 // STUB // Each stub compiles and returns a harmless value, so the chapter's program always runs: with
 // STUB // the stubs, the grid finds nothing and the picture shows only the background.
 // STUB // Check your work with:  cmake --build --preset grade --target check_07
+// STUB // Stuck? Hints in tiers you open one at a time: chapters/07_uniform_grid/hints.md, or
+// STUB // ./build/grade/hint 07.1 (tier 1, the idea), ./build/grade/hint 07.1 2 (the trap), ... 3 (the walk-through).
 // STUB //
 // STUB // This chapter uses chapter 02's objects (Objects::intersect, closer_than) and the slab test
 // STUB // (common/bounds.hpp); the grid's build and its query loops are given (grid.hpp).
@@ -26,15 +28,13 @@ namespace rt {
 cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_axis)
 {
     // EXERCISE 07.1: the cube-root rule.
-    // 1. No objects, or an empty box: 1 x 1 x 1.
-    // 2. Start with every axis of extent > 0 as one of the grid's dims (3 for a solid, 2 for a
-    //    floor, 1 for a line); V is the product of their extents.
-    // 3. Cells of side s with V / s^dims = lambda N: s = (V / (lambda N))^(1 / dims).
-    // 4. An axis with extent <= s is thinner than a cell: drop it from the dims (it gets 1 cell)
-    //    and go back to 3 with the others. When none is dropped, n_i = round(extent_i / s),
-    //    clamped to 1 .. max_per_axis.
-    // Hint: std::pow(x, 1.0f / dims); compute in float, the box is float; clamp a float before
-    // converting it to int.
+    // Return the number of cells along each axis: cubic cells, about lambda of them per object,
+    // spread over the axes the scene has room along; each count rounded to the nearest and kept
+    // within 1 .. max_per_axis. An axis no wider than a cell gets one cell, and the side is chosen
+    // again over the others. A count of 0 or less, an empty box, or a box of no extent: 1 x 1 x 1.
+    // A floor spreads its cells over an area, a line over a length: the root must follow.
+    // Lesson: "The grid's resolution".
+    // Stuck? hint 07.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     if (objects <= 0 || box.empty())
         return {1, 1, 1};
@@ -72,10 +72,12 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_
 cell3 cell_of(const GridShape& grid, const point3& p)
 {
     // EXERCISE 07.2: the cell holding p, clamped into the grid.
-    // For each axis a: floor((p[a] - grid.box.min[a]) / grid.cell_size[a]), clamped to
-    // 0 .. grid.n[a] - 1.
-    // Hint: clamp the float before converting it to int: a point far outside gives a value no int
-    // can hold.
+    // Return the cell of `grid` that holds p: on each axis, how many whole cells p lies past the box's
+    // min side. A point exactly on a boundary belongs to the cell above it; a point on the far face,
+    // or outside the grid however far (even infinitely), to the nearest cell inside.
+    // Clamp while the value is still a float: a point 1e30 away is no int.
+    // Lesson: "A point's cell, and an object's cells".
+    // Stuck? hint 07.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     cell3 c;
     for (int a = 0; a < 3; ++a) {
@@ -89,9 +91,12 @@ cell3 cell_of(const GridShape& grid, const point3& p)
 
 CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
 {
-    // EXERCISE 07.3: the cells the box overlaps: from the cell of its min corner to the cell of its
-    // max corner, on each axis (both included).
-    // Hint: two calls of cell_of (07.2).
+    // EXERCISE 07.3: the cells a box overlaps.
+    // Return the block of cells `bounds` touches, first and last on each axis both included, clamped
+    // into the grid: a box larger than the grid gets every cell. A box that ends exactly on a cell
+    // boundary is listed on both sides of it. Your 07.2 already does the hard part.
+    // Lesson: "A point's cell, and an object's cells".
+    // Stuck? hint 07.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     return {cell_of(grid, bounds.min), cell_of(grid, bounds.max)};
     // SOLUTION END
@@ -101,16 +106,14 @@ CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
 GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
 {
     // EXERCISE 07.4: the walk's setup.
-    // 1. inside = hit_bounds(grid.box, ray, range); none: return a GridWalk{} (missed).
-    // 2. walk.missed = false; the first cell c = cell_of(grid, ray.at(inside->min)), p its address;
-    //    t_enter = inside->min; t_range = range.max; t_end = range.max for now.
-    // 3. For each axis a with ray.dir[a] != 0:
-    //      going up (dir > 0): step_p = +strides()[a], boundary = box.min + (c[a] + 1) s, m = n - 1 - c[a];
-    //      going down:         step_p = -strides()[a], boundary = box.min + c[a] s,       m = c[a];
-    //      t_delta = s / |dir[a]|, t_first = (boundary - origin[a]) / dir[a], both in double,
-    //      t_max = t_first rounded to float, and t_end = min(t_end, boundary_t(walk, a, m)).
-    // Hint: s is grid.cell_size[a]; static_cast<double>(x) before dividing; leave the other axes as
-    // GridWalk{} has them (infinity, 0).
+    // Return the walk of `ray` through `grid` over `range`, in the cell where it enters the box (a
+    // missed walk when it never meets the box within the range), every GridWalk field set as the
+    // header says: per moving axis the step, t_delta, t_first (in double) and t_max; t_enter; t_end,
+    // the nearer of the range's end and the box's face as the walk's own boundaries place it;
+    // t_range. A 0 or -0 component never steps. Going down an axis, the first boundary ahead is the
+    // cell's lower face.
+    // Lesson: "The walk" (its paragraphs The setup and Termination).
+    // Stuck? hint 07.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     GridWalk walk;
     const std::optional<Interval> inside = hit_bounds(grid.box, ray, range);
@@ -145,11 +148,12 @@ GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
 bool next_cell(GridWalk& walk)
 {
     // EXERCISE 07.5: the next-voxel step.
-    // 1. a = the axis with the least t_max.
-    // 2. t_max[a] >= t_end: the ray leaves the box (or its range ends) before the next boundary;
-    //    return false.
-    // 3. t_enter = t_max[a]; p += step_p[a]; ++steps[a]; t_max[a] = boundary_t(walk, a, steps[a]).
-    // Hint: written as !(t_max[a] < t_end), the test also stops a walk whose t is NaN.
+    // Move `walk` into the neighbour the ray enters next, through the boundary it reaches first, and
+    // return true; return false, the walk unchanged, when that boundary is at or beyond t_end. Every
+    // field the step touches must stay consistent, and the next boundary's t comes from boundary_t,
+    // never from a running sum. A walk whose t is NaN must stop too.
+    // Lesson: "The walk" (the 3D DDA, Termination and Drift).
+    // Stuck? hint 07.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     int a = walk.t_max[0] < walk.t_max[1] ? 0 : 1;
     if (walk.t_max[2] < walk.t_max[a])
@@ -169,10 +173,12 @@ bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Int
                      ObjectHit& best)
 {
     // EXERCISE 07.6: the cell query.
-    // For each object k = grid.object_index[i], i from grid.cell_start[walk.p] up to (not including)
-    // grid.cell_start[walk.p + 1]: when objects.intersect(k, ray, closer_than(range, best, k), hit)
-    // and hit.t <= walk.cell_exit(), best = hit. Return whether best changed.
-    // Hint: a hit beyond cell_exit() is not wrong, only early: leave it, a later cell finds it again.
+    // Test each object listed in the walk's current cell against `ray`, each in the range that beats
+    // `best` (closer_than), and keep in `best` the nearest hit that lies within the cell, no farther
+    // than walk.cell_exit(). Return whether `best` changed; an empty cell changes nothing.
+    // A hit beyond the cell is not wrong, only early: leave it, a later cell that lists it finds it.
+    // Lesson: "The cell query".
+    // Stuck? hint 07.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     bool found = false;
     const float exit = walk.cell_exit();

@@ -7,11 +7,13 @@
 // SOLUTION END
 // STUB // Chapter 08, mailboxing: your exercises.
 // STUB //
-// STUB // Each function below says what to compute and gives a hint; its contract is documented in
+// STUB // Each function below states what to compute (not how); its contract is documented in
 // STUB // chapters/08_mailboxing/08_mailboxing.hpp and the lesson in that folder's README.md.
 // STUB // Each stub compiles and returns a harmless value, so the chapter's program always runs: with
 // STUB // the stubs, the grid with mailboxes finds nothing and the picture shows only the background.
 // STUB // Check your work with:  cmake --build --preset grade --target check_08
+// STUB // Stuck? Hints in tiers you open one at a time: chapters/08_mailboxing/hints.md, or
+// STUB // ./build/grade/hint 08.1 (tier 1, the idea), ./build/grade/hint 08.1 2 (the trap), ... 3 (the walk-through).
 // STUB //
 // STUB // This chapter uses chapter 07's grid and walk (07.4, 07.5) and chapter 02's objects.
 #include "08_mailboxing/08_mailboxing.hpp"
@@ -27,10 +29,11 @@ namespace rt {
 std::uint32_t next_signature(Mailboxes& m)
 {
     // EXERCISE 08.1: the next signature.
-    // 1. s = m.last_signature + 1 (an unsigned 32-bit sum: after 4294967295 it is 0).
-    // 2. s == 0: the counter has wrapped. Set every mailbox's ray to 0 (no ray), and s = 1.
-    // 3. m.last_signature = s; return s.
-    // Hint: for (Mailbox& b : m.box) b.ray = 0;
+    // Return the next ray's signature, one more than the last one handed out, and remember it in m.
+    // 0 means "no ray" and is never handed out: when the 32-bit counter wraps, every mailbox of m
+    // must first forget its ray, and the count starts again at 1. Until then leave the mailboxes alone.
+    // Lesson: "Signatures".
+    // Stuck? hint 08.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     std::uint32_t s = m.last_signature + 1u;
     if (s == 0u) {
@@ -49,13 +52,13 @@ bool mailboxed_intersect(Mailboxes& m, std::uint32_t signature, const Objects& o
                          Interval range, ObjectHit& hit)
 {
     // EXERCISE 08.2: one object through its mailbox.
-    // 1. Mailbox& b = m.box[k].
-    // 2. b.ray == signature: this ray tested k before. count(Counter::mailbox_hits). A miss
-    //    (b.t infinite) is a miss; a hit counts only when range.surrounds(b.t): then
-    //    hit = {b.t, k, b.beta, b.gamma}, return true. Else return false.
-    // 3. Otherwise: found = objects.intersect(k, ray, range, h) with a fresh ObjectHit h; store
-    //    b = {signature, found ? h.t : infinity, h.beta, h.gamma}; when found, hit = h. Return found.
-    // Hint: the stored answer is what the test found, whatever the caller does with it.
+    // Return whether `ray` hits object k inside `range`, with `hit` filled in. When k's mailbox holds
+    // `signature`, this ray has tested k before: answer from the mailbox with no test, counted in
+    // Counter::mailbox_hits. Otherwise make the one counted test and store its answer, hit or miss,
+    // with the signature. A stored hit is a hit only strictly inside the range asked now.
+    // Store what the test found, whether or not the caller will keep it.
+    // Lesson: "Through the mailbox".
+    // Stuck? hint 08.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     Mailbox& b = m.box[k];
     if (b.ray == signature) {
@@ -79,11 +82,12 @@ bool closest_in_cell_mailboxed(const Grid& grid, const GridWalk& walk, Mailboxes
                                const Ray& ray, Interval range, const Objects& objects, ObjectHit& best)
 {
     // EXERCISE 08.3: the cell query of 07.6, each object asked through its mailbox.
-    // For each object k of the cell (grid.object_index[i], i from grid.cell_start[walk.p] up to, not
-    // including, grid.cell_start[walk.p + 1]): when mailboxed_intersect(m, signature, objects, k,
-    // ray, closer_than(range, best, k), hit) and hit.t <= walk.cell_exit(), best = hit.
-    // Return whether best changed.
-    // Hint: your 07.6 with one call changed.
+    // The contract of 07.6 (the nearest hit within the current cell, each object in the range that
+    // beats `best`; return whether `best` changed), with each object asked through 08.2 for this
+    // ray's `signature` in the mailboxes m. A hit beyond the cell is left, not marked done: the
+    // cell that holds it will ask again and get its answer from the mailbox.
+    // Lesson: "The cell query through the mailboxes".
+    // Stuck? hint 08.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     bool found = false;
     const float exit = walk.cell_exit();

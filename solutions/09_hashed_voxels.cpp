@@ -7,11 +7,13 @@
 // SOLUTION END
 // STUB // Chapter 09, hashed voxels: your exercises.
 // STUB //
-// STUB // Each function below says what to compute and gives a hint; its contract is documented in
+// STUB // Each function below states what to compute (not how); its contract is documented in
 // STUB // chapters/09_hashed_voxels/09_hashed_voxels.hpp and the lesson in that folder's README.md.
 // STUB // Each stub compiles and returns a harmless value, so the chapter's program always runs: with
 // STUB // the stubs, the hashed grid finds nothing and the picture shows only the background.
 // STUB // Check your work with:  cmake --build --preset grade --target check_09
+// STUB // Stuck? Hints in tiers you open one at a time: chapters/09_hashed_voxels/hints.md, or
+// STUB // ./build/grade/hint 09.1 (tier 1, the idea), ./build/grade/hint 09.1 2 (the trap), ... 3 (the walk-through).
 // STUB //
 // STUB // This chapter uses chapter 07's grid shape and walk (07.4, 07.5) and chapter 02's objects.
 #include "09_hashed_voxels/09_hashed_voxels.hpp"
@@ -23,9 +25,12 @@ namespace rt {
 
 std::int32_t residue_step(std::int32_t step_p, std::uint32_t M)
 {
-    // EXERCISE 09.1: step_p mod M, keeping step_p's sign.
-    // Hint: C++'s % on signed numbers keeps the sign of the left one (-7 % 5 is -2); cast M to
-    // std::int64_t first so that the unsigned M does not turn a negative step_p unsigned.
+    // EXERCISE 09.1: the residue a step adds
+    // Return step_p mod M as a number with step_p's own sign, strictly between -M and M: what one
+    // step along an axis adds to the walk's residue r. Negative steps, steps larger than M,
+    // multiples of M and M = 1 all occur; M is any 32-bit unsigned size. Nudge: step_p is signed
+    // and M is not; mind what C++ does when the two meet. Lesson: "The residue without division".
+    // Stuck? hint 09.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     return static_cast<std::int32_t>(static_cast<std::int64_t>(step_p) % static_cast<std::int64_t>(M));
     // SOLUTION END
@@ -34,8 +39,12 @@ std::int32_t residue_step(std::int32_t step_p, std::uint32_t M)
 
 std::uint32_t advance_residue(std::uint32_t r, std::int32_t step, std::uint32_t M)
 {
-    // EXERCISE 09.2: r + step, brought back into [0, M) with one addition or subtraction of M.
-    // Hint: compute in std::int64_t (r + step may be negative, or pass M); no % here.
+    // EXERCISE 09.2: the residue after a step
+    // Return r + step brought back into [0, M), for r in [0, M) and step in (-M, M), with no
+    // division or remainder: one comparison and at most one correction by M. The sum can be
+    // negative, can land exactly on M, and can be larger than any 32-bit signed number.
+    // Lesson: "The residue without division (EXERCISES 09.1 and 09.2)".
+    // Stuck? hint 09.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     std::int64_t next = static_cast<std::int64_t>(r) + step;
     if (next >= static_cast<std::int64_t>(M))
@@ -49,8 +58,11 @@ std::uint32_t advance_residue(std::uint32_t r, std::int32_t step, std::uint32_t 
 
 bool occupied(const OccupancyBits& bits, std::int32_t p)
 {
-    // EXERCISE 09.3: bit p: word p / 64 (p >> 6), bit p % 64 (p & 63) of it.
-    // Hint: (word >> bit) & 1, with the word a std::uint64_t.
+    // EXERCISE 09.3: the occupancy bit
+    // Return whether cell p's bit is set in the array (OccupancyBits in the header: 64 bits to a
+    // word, counted from word 0's least significant bit). p is a cell address, 0 or more.
+    // Nudge: whatever you shift must be 64 bits wide. Lesson: "The occupancy bits".
+    // Stuck? hint 09.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const auto u = static_cast<std::uint32_t>(p);
     return (bits.words[u >> 6] >> (u & 63u)) & 1u;
@@ -60,9 +72,12 @@ bool occupied(const OccupancyBits& bits, std::int32_t p)
 
 const HashedCell* find_cell(const HashTable& table, std::int32_t p, std::uint32_t r)
 {
-    // EXERCISE 09.4: the bucket's cells are table.cells[table.bucket_start[r]] up to, not including,
-    // table.cells[table.bucket_start[r + 1]]: return the one whose p matches, else nullptr.
-    // Hint: the residue alone does not name a cell: compare the keys.
+    // EXERCISE 09.4: the cell in its bucket
+    // Return a pointer to the table's own cell whose key is p, looking only in bucket r (r = p mod M;
+    // HashTable in the header says where a bucket's cells lie), or nullptr when the bucket holds no
+    // cell with key p: it may be empty, or hold only other cells that share the residue.
+    // Lesson: "The table".
+    // Stuck? hint 09.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     for (std::uint32_t i = table.bucket_start[r]; i < table.bucket_start[r + 1]; ++i)
         if (table.cells[i].p == p)
@@ -75,12 +90,13 @@ const HashedCell* find_cell(const HashTable& table, std::int32_t p, std::uint32_
 bool closest_in_hashed_cell(const HashTable& table, const OccupancyBits& bits, const GridWalk& walk, std::uint32_t r,
                             const Ray& ray, Interval range, const Objects& objects, ObjectHit& best)
 {
-    // EXERCISE 09.5: the cell query on the hashed grid.
-    // 1. !occupied(bits, walk.p): count(Counter::table_lookups_skipped) and return false.
-    // 2. count(Counter::table_lookups); cell = find_cell(table, walk.p, r); none: return false.
-    // 3. For each object k = table.object_index[i], i from cell->first up to cell->first +
-    //    cell->count: 07.6's test (objects.intersect in closer_than(range, best, k), kept when
-    //    hit.t <= walk.cell_exit()). Return whether best changed.
+    // EXERCISE 09.5: the cell query on the hashed grid
+    // Chapter 07's cell query (07.6) for the cell the walk is in (its residue is r), with the table
+    // read only when the cell's occupancy bit is on. Each call counts once: a skipped lookup
+    // (Counter::table_lookups_skipped) when the bit is off, else a lookup (Counter::table_lookups),
+    // even when the table then holds no such cell. Returns whether best changed.
+    // Lesson: "The occupancy bits", and chapter 07's "The cell query".
+    // Stuck? hint 09.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     if (!occupied(bits, walk.p)) {
         count(Counter::table_lookups_skipped);
