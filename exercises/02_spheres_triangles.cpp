@@ -35,8 +35,10 @@ std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>
 {
     // EXERCISE 02.2: the same sphere, without the cancellation (Ray Tracing Gems ch. 7).
     // The same answers as 02.1 (the nearest t strictly inside `range`, a tangent ray misses, a ray from
-    // inside hits the far side), but no step may subtract two large, nearly equal numbers, and every
-    // step is computed in double whatever T is: from 1 above a sphere of radius 1e4, t stays within 1e-6.
+    // inside hits the far side), but with no subtraction whose rounding float cannot afford: the
+    // discriminant from a vector, not from the slide's difference of two squares, the two roots
+    // each by a stable form, and every step in double whatever T is: from 1 above a sphere of
+    // radius 1e4, t stays within 1e-6.
     // Lesson: "Why the slide's sphere fails far away, and the fix (EXERCISE 02.2)".
     // Stuck? hint 02.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("02.2", std::nullopt);

@@ -29,7 +29,8 @@ vec3 reflect(const vec3& v, const vec3& n);
 
 // EXERCISE 03.2: the refracted direction by Snell's law, n1 sin(theta_i) = n2 sin(theta_t), where
 // n1 is the index on the ray's side and n2 the other: entering (v.n < 0), n1 = 1 and n2 = ior;
-// leaving (v.n > 0), n1 = ior and n2 = 1, and the normal is turned to face the ray. With
+// leaving (v.n > 0), n1 = ior and n2 = 1, and the normal is turned to face the ray; v.n = 0 (+0 or
+// -0, a grazing ray) counts as entering: "leaving" is v.n > 0 strictly. With
 // eta = n1 / n2, cos_i = -v.n (for the normal that faces the ray) and
 // cos^2(theta_t) = 1 - sin^2(theta_t) = 1 - eta^2 (1 - cos_i^2), the transmitted direction is
 //   t = eta v + (eta cos_i - cos_t) n,   cos_t = sqrt(cos^2(theta_t)).

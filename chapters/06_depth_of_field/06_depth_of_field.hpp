@@ -41,7 +41,8 @@ point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole);
 //  - with lens.aperture_radius = 0 (the pinhole), primary_ray(cam, x, y) exactly, bit for bit, and
 //    nothing drawn from rng: an aperture of zero renders chapter 01's image, at any sample count;
 //  - otherwise draw two numbers from rng, the first s.x and the second s.y of a point s of the
-//    unit square, map it onto the lens, the point eye + R (d.x u + d.y v) with d = concentric_disc(s)
+//    unit square (in two statements, s.x first: C++ does not fix the order in which a function's
+//    arguments are evaluated, so point2(rng.next_float(), rng.next_float()) may draw s.y first), map it onto the lens, the point eye + R (d.x u + d.y v) with d = concentric_disc(s)
 //    and R = lens.aperture_radius, and return the ray from that lens point, with a unit direction,
 //    toward focal_point(cam, lens, primary_ray(cam, x, y)).
 // Every ray of a pixel so passes through the same point of the plane of sharp focus: points on

@@ -41,7 +41,8 @@ std::uint32_t next_signature(Mailboxes& m);
 
 // EXERCISE 08.2: object k tested against the ray whose signature is `signature`, through its
 // mailbox. When the mailbox holds that signature, the ray has met object k before in this query:
-// answer from the mailbox, without a test, and count it (count(Counter::mailbox_hits)). Else call
+// answer from the mailbox, without a test, and count it (count(Counter::mailbox_hits)) whatever it
+// answers: a hit, a stored miss, or a stored hit now outside the range. Else call
 // objects.intersect(k, ray, range, hit), the one counted test, and store the answer in the mailbox
 // with the signature: a hit's t, beta and gamma, or t = infinity for a miss.
 // A query's range only shrinks as it goes (a closer hit lowers its end), so the stored answer

@@ -35,7 +35,7 @@ struct HashedCell {
 };
 
 // The table: M buckets, bucket b holding cells[bucket_start[b] .. bucket_start[b + 1]), the cells
-// whose address is b mod M, by increasing address. Flat arrays, as chapter 07's grid.
+// whose address mod M is b, by increasing address. Flat arrays, as chapter 07's grid.
 struct HashTable {
     std::uint32_t M = 1;
     std::vector<std::uint32_t> bucket_start;  // M + 1 offsets
