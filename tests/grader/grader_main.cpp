@@ -114,7 +114,7 @@ public:
             if (working_on_now && *working_on_now)
                 out << "while working on " << (*working_on_now)() << '\n';
             for (const Catch::MessageInfo& m : stats.infoMessages)
-                if (m.message != a.getMessage())
+                if (m.message != std::string(a.getMessage()))
                     out << m.message << '\n';
             out << "  after the check at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
             current_.output = out.str() + current_.output;
