@@ -37,11 +37,13 @@ public:
         do {
             count(Counter::cells_visited);
             if (closest_in_cell_mailboxed(grid_.grid(), walk, m, signature, ray, range, objects, best)) {
+                if (walk_cut_short(grid_.grid().shape, walk))  // (grid.hpp)
+                    return brute_force().closest(ray, range, objects, hit);
                 hit = best;
                 return true;
             }
         } while (next_cell(walk));
-        return false;
+        return walk_cut_short(grid_.grid().shape, walk) && brute_force().closest(ray, range, objects, hit);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
@@ -59,7 +61,7 @@ public:
                 if (mailboxed_intersect(m, signature, objects, static_cast<int>(g.object_index[i]), ray, range, hit))
                     return true;
         } while (next_cell(walk));
-        return false;
+        return walk_cut_short(g.shape, walk) && brute_force().any(ray, range, objects);
     }
 
     std::size_t bytes() const override { return grid_.bytes(); }

@@ -64,11 +64,13 @@ public:
         do {
             count(Counter::cells_visited);
             if (closest_in_hashed_cell(table_, bits_, walk, r.r, ray, range, objects, best)) {
+                if (walk_cut_short(shape_, walk))  // (chapter 07's grid.hpp)
+                    return brute_force().closest(ray, range, objects, hit);
                 hit = best;
                 return true;
             }
         } while (step(walk, r));
-        return false;
+        return walk_cut_short(shape_, walk) && brute_force().closest(ray, range, objects, hit);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
@@ -90,7 +92,7 @@ public:
                     if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
                         return true;
         } while (step(walk, r));
-        return false;
+        return walk_cut_short(shape_, walk) && brute_force().any(ray, range, objects);
     }
 
     std::size_t bytes() const override { return stats_.bytes; }

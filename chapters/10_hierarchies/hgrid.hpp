@@ -50,6 +50,7 @@ public:
         references_ = static_cast<long long>(h_.grids[0].grid.object_index.size());
         subdivide(objects, 0, 0);
         for (const GridNode& node : h_.grids) {
+            finest_ = std::min({finest_, node.grid.shape.cell_size.x, node.grid.shape.cell_size.y, node.grid.shape.cell_size.z});
             stats_.cells += node.grid.shape.cell_count();
             stats_.references += static_cast<long long>(node.grid.object_index.size());
             stats_.bytes += sizeof(GridNode) +
@@ -61,6 +62,8 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (cells_finer_than_t(ray, range))
+            return brute_force().closest(ray, range, objects, hit);
         ObjectHit best;
         if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
             return false;
@@ -70,6 +73,8 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (cells_finer_than_t(ray, range))
+            return brute_force().any(ray, range, objects);
         return any_in(0, ray, range, range, objects);
     }
 
@@ -177,6 +182,21 @@ private:
         return false;
     }
 
+    // Whether the float steps of t where the ray crosses the root's box are as large as a quarter of
+    // the finest cell: there the walks' boundaries round together and a walk can stop with cells
+    // still ahead (chapter 07's walk_cut_short, which the grids check exactly; here the walk of a
+    // child grid is the student's 10.5, so the check is made once per ray, before it). Such a ray
+    // (a scene 1e-6 across seen from 10 away) gets brute force's answer.
+    bool cells_finer_than_t(const Ray& ray, Interval range) const
+    {
+        const std::optional<Interval> inside = hit_bounds(h_.grids[0].grid.shape.box, ray, range);
+        if (!inside)
+            return false;
+        const float far = std::max(std::abs(inside->min), std::abs(inside->max));
+        return 4.0f * far * 0x1p-23f >= finest_;
+    }
+
+    float finest_ = infinity;  // the smallest cell side of any grid of the hierarchy
     HGridSettings settings_;
     HGrid h_;
     HGridStats stats_;

@@ -278,3 +278,30 @@ TEST_CASE("long thin slivers, one huge triangle over thousands of tiny ones, and
     }
     check("a spiral of 5,761 shrinking spheres", spiral, looking_at(point3(0.0f, 0.0f, 5.0f), 20.0f), 60);
 }
+
+TEST_CASE("a sphere of subnormal radius beside zero-area triangles is found through every structure", "[structures]")
+{
+    // accel_fuzz's finding: the scene's box is 1e-6 long and 1.4e-42 across, the sphere at its end.
+    LitScene scene = with_material();
+    scene.add_sphere({{0, 0, 0}, 7.17464814e-43f}, 0);
+    for (int copy = 0; copy < 2; ++copy)
+        scene.add_triangle({{1.83347781e-12f, 0, 0}, {1.00000182e-06f, 0, 0}, {0, 0, 0}}, 0);
+    const Objects objects = objects_of(scene, lit_tests);
+    const Ray ray{{9.9375f, 0, 0}, {-1, 0, 0}};
+    for (const Interval range : {Interval{0.0f, infinity}, Interval{1e-4f, 10.0f}}) {
+        ObjectHit want;
+        const bool want_found = brute_force().closest(ray, range, objects, want);
+        for (const Structure& s : structures()) {
+            const std::unique_ptr<Accelerator> built = s.build(objects, 5.5f);
+            ObjectHit got;
+            const bool got_found = built->closest(ray, range, objects, got);
+            INFO("the " << s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
+                 << "): brute force finds " << agreement::answer(want_found, want) << ", the structure "
+                 << agreement::answer(got_found, got));
+            CHECK(got_found == want_found);
+            CHECK(got.object == want.object);
+            CHECK(got.t == want.t);
+            CHECK(built->any(ray, range, objects) == brute_force().any(ray, range, objects));
+        }
+    }
+}
