@@ -110,6 +110,12 @@ int check(const fs::path& kit, int tiers)
     return problems == 0 && checked > 0 ? 0 : 1;
 }
 
+// A tier number, 0 to 3; -1 for anything else ("x", "7", "2a").
+int tier_of(const std::string& text)
+{
+    return text.size() == 1 && text[0] >= '0' && text[0] <= '3' ? text[0] - '0' : -1;
+}
+
 int usage()
 {
     std::cerr << "usage: hint NN.k [TIER] | hint NN | hint --check [TIERS]  [--kit DIR]\n";
@@ -135,8 +141,14 @@ int main(int argc, char** argv)
     }
     if (args.empty())
         return usage();
-    if (args[0] == "--check")
-        return check(kit, args.size() > 1 ? std::atoi(args[1].c_str()) : 3);
+    if (args[0] == "--check") {
+        const int tiers = args.size() > 1 ? tier_of(args[1]) : 3;
+        if (tiers < 0) {
+            std::cerr << "hint: --check takes a number of tiers from 0 to 3, got '" << args[1] << "'\n";
+            return 2;
+        }
+        return check(kit, tiers);
+    }
 
     const std::string exercise = args[0];
     if (!std::regex_match(exercise, std::regex(R"(\d\d(\.\w+)?)")))
@@ -161,7 +173,7 @@ int main(int argc, char** argv)
                   << " lists them)\n";
         return 2;
     }
-    const int tier = args.size() > 1 ? std::atoi(args[1].c_str()) : 1;
+    const int tier = args.size() > 1 ? tier_of(args[1]) : 1;
     const auto t = at->second.find(tier);
     if (t == at->second.end()) {
         std::cerr << "hint: " << exercise << " has tier(s) 1 to " << at->second.rbegin()->first << " here, not " << args[1]
