@@ -2,7 +2,8 @@
 # would: alice hands in the solutions, bob forgets chapter 02's file, carol hands in chapter 01
 # untouched and a chapter 02 that does not compile. The batch must grade all three to a complete
 # gradebook; bob's and carol's chapter 02 and carol's chapter 01 must each be one line, worth the
-# whole chapter, in results.json, junit.xml and the class page.
+# whole chapter, in results.json, junit.xml and the class page; and a second batch in the same
+# build folder grades the files as they are now.
 #   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P batch_test.cmake
 file(REMOVE_RECURSE "${WORK}/class")
 set(class "${WORK}/class")
@@ -123,4 +124,17 @@ if(WIN32)
 elseif(NOT rc EQUAL 0 OR NOT regrade MATCHES "changed after this grader was built: rebuilding it first"
        OR NOT regrade MATCHES "01\\.2 +14 / 14")
   fail("grade_01 after an edit should rebuild and give 01.2 full points (${rc}):\n${regrade}")
+endif()
+
+# The batch again, carol's chapter 01 the handed-out stubs once more, copied with their old file
+# times (as a submission unpacked from an archive keeps them): older than the object the edit above
+# left, so a build that trusted times would grade the solution. She must get the stubs' line again.
+file(REMOVE "${class}/carol/01_ray_casting.cpp")
+file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${class}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
+    -P "${SOURCE_DIR}/tests/grade_batch.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+file(READ "${WORK}/build/students/carol/results.json" json)
+if(NOT rc EQUAL 0 OR NOT json MATCHES "chapter 01 is still the handed-out stubs")
+  fail("a second batch should grade carol's chapter 01 as the stubs again, not the program an earlier run built")
 endif()

@@ -42,6 +42,12 @@ foreach(entry IN LISTS entries)
   endif()
   get_filename_component(student "${entry}" NAME)
   message(STATUS "==== ${student}")
+  # Every student's files compile afresh: a copied submission keeps its files' old times, older
+  # than the objects a rerun of the batch left, and a build that trusts times would grade those.
+  file(GLOB stale LIST_DIRECTORIES true "${BUILD_DIR}/CMakeFiles/ex_*.dir" "${BUILD_DIR}/ex_*.dir")
+  if(stale)
+    file(REMOVE_RECURSE ${stale})
+  endif()
   execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" ${generator}
       -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${entry}" "-D RT_GRADE_CHAPTERS=${CHAPTERS}"
     RESULT_VARIABLE rc OUTPUT_QUIET)
