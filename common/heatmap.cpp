@@ -107,9 +107,28 @@ Image heat_image(const CostMap& map, const std::string& what, double top, HeatSc
     const auto level = [&](double cost) {
         return static_cast<float>(log_scale ? std::log10(1.0 + cost) / std::log10(1.0 + top) : cost / top);
     };
-    // The map, then a bar 24 pixels wide with tick labels to its right.
-    constexpr int gap = 12, bar = 24, label_room = 150;
+    // The map, then a bar 24 pixels wide with tick labels to its right, and the caption under them,
+    // at the tick labels' size where the map is tall enough, so that a projected slide can read it.
+    constexpr int gap = 12, bar = 24, label_room = 200;
     const int h = map.height;
+    const int caption_scale = h >= 240 ? 2 : 1, line_height = 10 * caption_scale;
+    const int x0 = map.width + gap, room = bar + label_room - 4;
+    std::vector<std::string> lines;
+    for (size_t start = 0; start < what.size();) {
+        // As many words as fit on the line; a word longer than the line gets one of its own.
+        size_t end = what.size(), cut = std::string::npos;
+        for (size_t k = start; k <= what.size(); ++k)
+            if (k == what.size() || what[k] == ' ') {
+                std::vector<char> probe(what.begin() + static_cast<long>(start), what.begin() + static_cast<long>(k));
+                probe.push_back('\0');
+                if (stb_easy_font_width(probe.data()) * caption_scale > room && cut != std::string::npos)
+                    break;
+                cut = k;
+            }
+        end = cut == std::string::npos ? what.size() : cut;
+        lines.push_back(what.substr(start, end - start));
+        start = end + 1;
+    }
     Image image(map.width + gap + bar + label_room, h);
     const color background(0.02f);
     for (color& c : image.pixels)
@@ -119,10 +138,9 @@ Image heat_image(const CostMap& map, const std::string& what, double top, HeatSc
             image.at(i, j) = viridis(level(static_cast<double>(map.cost[static_cast<size_t>(j) * map.width + i])));
     // The bar runs from `top` at its top to 0 at its bottom, with room for the caption below it; a
     // map too low for one (a render a few pixels high) goes without.
-    const int bar_top = 8, bar_bottom = h - 34;
+    const int bar_top = 8, bar_bottom = h - 14 - line_height * static_cast<int>(lines.size());
     if (bar_bottom < bar_top + 2)
         return image;
-    const int x0 = map.width + gap;
     for (int j = bar_top; j <= bar_bottom; ++j)
         for (int i = x0; i < x0 + bar; ++i)
             image.at(i, j) = viridis(static_cast<float>(bar_bottom - j) / static_cast<float>(bar_bottom - bar_top));
@@ -144,25 +162,16 @@ Image heat_image(const CostMap& map, const std::string& what, double top, HeatSc
         const std::string text = label(v) + (v == top ? "+" : "");
         draw_text(image, x0 + bar + 8, j - 6, text, ink);
     }
-    // The caption under the bar, in two lines when one would run past the image's edge.
-    std::string first = what, second;
-    std::vector<char> probe(what.begin(), what.end());
-    probe.push_back('\0');
-    if (x0 + stb_easy_font_width(probe.data()) > image.width) {
-        const size_t cut = what.rfind(' ', what.size() / 2 + 4);
-        if (cut != std::string::npos) {
-            first = what.substr(0, cut);
-            second = what.substr(cut + 1);
-        }
-    }
-    draw_text(image, x0, bar_bottom + 10, first, ink, 1);
-    draw_text(image, x0, bar_bottom + 20, second, ink, 1);
+    for (size_t k = 0; k < lines.size(); ++k)
+        draw_text(image, x0, bar_bottom + 10 + line_height * static_cast<int>(k), lines[k], ink, caption_scale);
     return image;
 }
 
-Image side_by_side(const Image& a, const Image& b)
+// `b` placed to the right of `a` or under it, on the maps' background.
+static Image joined(const Image& a, const Image& b, bool below)
 {
-    Image image(a.width + b.width, std::max(a.height, b.height));
+    const int bx = below ? 0 : a.width, by = below ? a.height : 0;
+    Image image(std::max(a.width, bx + b.width), std::max(a.height, by + b.height));
     for (color& c : image.pixels)
         c = color(0.02f);
     for (int j = 0; j < a.height; ++j)
@@ -170,8 +179,18 @@ Image side_by_side(const Image& a, const Image& b)
             image.at(i, j) = a.at(i, j);
     for (int j = 0; j < b.height; ++j)
         for (int i = 0; i < b.width; ++i)
-            image.at(a.width + i, j) = b.at(i, j);
+            image.at(bx + i, by + j) = b.at(i, j);
     return image;
+}
+
+Image above_below(const Image& a, const Image& b)
+{
+    return joined(a, b, true);
+}
+
+Image side_by_side(const Image& a, const Image& b)
+{
+    return joined(a, b, false);
 }
 
 }  // namespace rt

@@ -63,6 +63,9 @@ double heat_top(const CostMap& map);
 // a and b side by side (b to the right), on a dark background where their heights differ.
 Image side_by_side(const Image& a, const Image& b);
 
+// `a` above `b`, left-aligned, the narrower one padded with the background.
+Image above_below(const Image& a, const Image& b);
+
 // The viridis colour at v in [0, 1], linear RGB.
 color viridis(float v);
 

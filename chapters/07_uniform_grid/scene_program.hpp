@@ -127,8 +127,10 @@ inline Comparison compare_structures(const SceneProgram& program, const SceneRen
     return c;
 }
 
-// The comparison's heat maps side by side, on one logarithmic scale up to the largest of their
-// tops (the structures differ a hundredfold), each captioned with its structure's name. Each structure's render must equal the figure's `image`.
+// The figure: `image` beside the comparison's heat maps, on one logarithmic scale up to the largest
+// of their tops (the structures differ a hundredfold), each captioned with its structure's name;
+// three maps go in two rows under and beside the render, a shape that fits a slide. Each
+// structure's render must equal the figure's `image`.
 inline Image compared_heat_maps(const SceneProgram& program, const Comparison& c, const Image& image)
 {
     const SceneProgram::Heat& heat = heat_named(program, "tests");
@@ -138,11 +140,16 @@ inline Image compared_heat_maps(const SceneProgram& program, const Comparison& c
             throw std::logic_error("the " + program.compare[k].name + "'s render differs from the figure's: a bug of the kit");
         top = std::max(top, heat_top(c.maps[k]));
     }
-    Image row;
-    for (size_t k = 0; k < c.maps.size(); ++k) {
-        const Image map = heat_image(c.maps[k], program.compare[k].name + ": " + heat.caption, top, HeatScale::log);
-        row = k == 0 ? map : side_by_side(row, map);
+    std::vector<Image> maps;
+    for (size_t k = 0; k < c.maps.size(); ++k)
+        maps.push_back(heat_image(c.maps[k], program.compare[k].name + ": " + heat.caption, top, HeatScale::log));
+    if (maps.size() == 3) {
+        const Image render = above_below(image, Image(maps[0].width, 0));  // padded to a map's width
+        return above_below(side_by_side(render, maps[0]), side_by_side(maps[1], maps[2]));
     }
+    Image row = image;
+    for (const Image& map : maps)
+        row = side_by_side(row, map);
     return row;
 }
 
@@ -194,7 +201,7 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
             return image;
         if (program.compare.empty())
             return side_by_side(image, map);
-        return side_by_side(image, compared_heat_maps(program, comparison, image));
+        return compared_heat_maps(program, comparison, image);
     }, stats(print_stats, accel.get(), objects.size()));
 }
 
