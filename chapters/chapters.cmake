@@ -114,6 +114,7 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   endif()
   set(png "${RT_TRADE_DIR}/${chapter}.png")
   add_custom_command(OUTPUT "${csv}"
+    BYPRODUCTS "${RT_TRADE_DIR}/${chapter}.tables.md"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${RT_TRADE_DIR}"
     COMMAND ${chapter} --sweep --csv "${csv}"
     COMMAND "${CMAKE_COMMAND}" -D "SCRIPT=${plot_script}"
@@ -126,6 +127,22 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND trade_files "${csv}")
 endforeach()
 add_custom_target(trade DEPENDS ${trade_files})
+
+# The lessons' measured tables are the sweeps' own (common/lesson_table.hpp): after `trade`,
+# `cmake --build <build> --target lesson_tables_refresh` pastes each chapter's NN_name.tables.md into its
+# lesson between the table's markers. The test lessons.tables_NN holds every column but the timed
+# ones to the code. Look at the diff before committing: the timed columns move with the machine.
+add_executable(lesson_tables "${CMAKE_SOURCE_DIR}/tests/lessons/lesson_tables.cpp")
+set_target_properties(lesson_tables PROPERTIES EXCLUDE_FROM_ALL ON)
+set(lesson_table_files "")
+foreach(chapter IN LISTS RT_CHAPTERS)
+  list(APPEND lesson_table_files "${RT_TRADE_DIR}/${chapter}.tables.md")
+endforeach()
+add_custom_target(lesson_tables_refresh
+  COMMAND lesson_tables refresh ${lesson_table_files} --kit "${CMAKE_SOURCE_DIR}"
+  DEPENDS trade lesson_tables
+  COMMENT "Pasting the sweeps' tables into the lessons"
+  VERBATIM)
 
 # The kit's NFF scenes (common/scenes/) rendered by every program from chapter 02 on, each with its
 # chapter's features, and by chapter 04's classic NFF mode: `cmake --build <build> --target scenes`

@@ -36,7 +36,20 @@ double median(std::vector<double> values)
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-double median_seconds(int repeats, const std::function<void()>& work)
+Timing timing_of(std::vector<double> seconds)
+{
+    if (seconds.empty())
+        return {};
+    const auto [least, most] = std::minmax_element(seconds.begin(), seconds.end());
+    return {median(seconds), *least, *most, static_cast<int>(seconds.size())};
+}
+
+Timing scaled(const Timing& t, double factor)
+{
+    return {t.median * factor, t.min * factor, t.max * factor, t.runs};
+}
+
+Timing time_runs(int repeats, const std::function<void()>& work)
 {
     std::vector<double> seconds;
     for (int k = 0; k < std::max(1, repeats); ++k) {
@@ -44,12 +57,12 @@ double median_seconds(int repeats, const std::function<void()>& work)
         work();
         seconds.push_back(timer.seconds());
     }
-    return median(std::move(seconds));
+    return timing_of(std::move(seconds));
 }
 
 static double rays_per_second(const TradeRow& row)
 {
-    return row.seconds > 0.0 ? static_cast<double>(row.rays) / row.seconds : 0.0;
+    return row.seconds.median > 0.0 ? static_cast<double>(row.rays) / row.seconds.median : 0.0;
 }
 
 void print_trade_table(std::ostream& out, const TradeTable& table)
@@ -63,7 +76,7 @@ void print_trade_table(std::ostream& out, const TradeTable& table)
         << std::setw(14) << "rays" << std::setw(16) << "rays/second" << std::setw(14) << "error" << '\n';
     for (const TradeRow& row : table.rows)
         out << std::left << std::setw(width) << row.value << std::right << std::fixed << std::setprecision(4)
-            << std::setw(12) << row.seconds << std::setw(14) << row.rays << std::setprecision(0)
+            << std::setw(12) << row.seconds.median << std::setw(14) << row.rays << std::setprecision(0)
             << std::setw(16) << rays_per_second(row) << std::scientific << std::setprecision(3) << std::setw(14)
             << row.error << std::defaultfloat << '\n';
 }
@@ -82,11 +95,12 @@ void write_trade_csv(const std::string& path, const TradeTable& table)
     std::ofstream out(path);
     if (!out)
         throw InputError(path + ": cannot write the CSV file");
-    out << "chapter,knob,value,seconds,rays,rays_per_second,error,error_metric\n";
+    out << "chapter,knob,value,seconds,rays,rays_per_second,error,error_metric,seconds_min,seconds_max,runs\n";
     out << std::setprecision(6);
     for (const TradeRow& row : table.rows)
-        out << table.chapter << ',' << row.knob << ',' << row.value << ',' << row.seconds << ',' << row.rays << ','
-            << rays_per_second(row) << ',' << row.error << ',' << table.error_metric << '\n';
+        out << table.chapter << ',' << row.knob << ',' << row.value << ',' << row.seconds.median << ',' << row.rays << ','
+            << rays_per_second(row) << ',' << row.error << ',' << table.error_metric << ',' << row.seconds.min << ','
+            << row.seconds.max << ',' << row.seconds.runs << '\n';
     if (!out)
         throw InputError(path + ": cannot write the CSV file");
 }

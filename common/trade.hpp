@@ -12,10 +12,24 @@
 
 namespace rt {
 
+// A time measured over several runs: its median is what a table reports, and min and max its
+// spread, which says how far to trust a difference between two rows (a busy machine widens it).
+// A time computed from others (a difference of two medians) has no runs of its own: runs is 0.
+struct Timing {
+    double median = 0.0, min = 0.0, max = 0.0;
+    int runs = 0;
+};
+
+// The median, min and max of `seconds` (all 0 with runs 0 for none).
+Timing timing_of(std::vector<double> seconds);
+
+// `t` in other units, e.g. scaled(t, 1e3) in milliseconds.
+Timing scaled(const Timing& t, double factor);
+
 struct TradeRow {
     std::string knob;      // what was varied, e.g. "spp"
     std::string value;     // its value in this row
-    double seconds;        // median of the repeats
+    Timing seconds;        // over the repeats
     std::uint64_t rays;    // rays of one run
     double error;          // against the reference, in the table's metric
 };
@@ -32,8 +46,8 @@ double rmse(const Image& a, const Image& b);
 // The median of the values (the mean of the middle two for an even count); 0 for none.
 double median(std::vector<double> values);
 
-// Runs `work` `repeats` times and returns the median wall-clock seconds.
-double median_seconds(int repeats, const std::function<void()>& work);
+// Runs `work` `repeats` times (at least once) and returns its wall-clock seconds.
+Timing time_runs(int repeats, const std::function<void()>& work);
 
 void print_trade_table(std::ostream& out, const TradeTable& table);
 
@@ -41,7 +55,8 @@ void print_trade_table(std::ostream& out, const TradeTable& table);
 // "out/name_missed.csv"; a path not ending in .csv gets the suffix and ".csv" appended.
 std::string csv_beside(const std::string& path, const std::string& suffix);
 
-// CSV columns: chapter,knob,value,seconds,rays,rays_per_second,error,error_metric.
+// CSV columns: chapter,knob,value,seconds,rays,rays_per_second,error,error_metric,seconds_min,
+// seconds_max,runs (the spread last, so that a reader of the older columns by position still works).
 // Throws InputError naming the path when it cannot be written.
 void write_trade_csv(const std::string& path, const TradeTable& table);
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # CI job: the kit as a Mac builds it. clang with libc++ (what Apple clang is), Catch2 v3 (what
 # Homebrew, Ubuntu 24.04, Fedora and vcpkg ship), stb found by its headers alone (Homebrew and
-# vcpkg have no pkg-config file for it), no OpenMP. Every target builds, every test passes.
+# vcpkg have no pkg-config file for it), no OpenMP. Every target builds, every test passes but the
+# lessons' tables (their sweeps are minutes of work, and the test job holds them to the code).
 #
 # Catch2 v3 is built from its release source (../shared/third_party/Catch2-3.4.0.tar.gz beside the
 # kit, or RT_CATCH2_V3_SOURCE) into build/ci-libcxx/catch2-v3, with the same compiler and library.
@@ -41,4 +42,4 @@ export CMAKE_PREFIX_PATH="$prefix"
 
 cmake --preset test -B "$work/test" -DRT_CATCH2_MAJOR=3 | grep -E "Catch2|stb:"
 cmake --build "$work/test"
-ctest --test-dir "$work/test" --output-on-failure --no-tests=error -j2
+ctest --test-dir "$work/test" --output-on-failure --no-tests=error -j2 -LE "^lessons$"

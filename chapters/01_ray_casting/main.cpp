@@ -4,6 +4,7 @@
 #include "common/cli.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <iostream>
@@ -42,12 +43,17 @@ void sweep(const Options& o)
         reset_counters();
         render_with(o, spp, o.common.seed);
         const std::uint64_t rays = total_rays(total_counts());
-        const double seconds = median_seconds(o.repeat, [&] { image = render_with(o, spp, o.common.seed); });
+        const Timing seconds = time_runs(o.repeat, [&] { image = render_with(o, spp, o.common.seed); });
         table.rows.push_back({"spp", std::to_string(spp), seconds, rays, rmse(image, reference)});
     }
     print_trade_table(std::cout, table);
     write_trade_csv(o.csv, table);
-    std::cout << "wrote " << o.csv << '\n';
+    write_lesson_tables(tables_beside(o.csv),
+                        {trade_lesson_table("01.spp", table, "spp", "RMSE vs " + std::to_string(o.reference_spp) + " spp", true,
+                                            "Release build, one thread per core, median of " + std::to_string(o.repeat) +
+                                                " runs.")},
+                        std::cout);
+    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

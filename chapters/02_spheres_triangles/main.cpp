@@ -8,6 +8,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -55,10 +56,10 @@ ShapeTests tests_named(const Options& o)
 struct Measured {
     std::string group;  // "sphere" or "triangle"
     std::string case_name, test, precision;
-    double seconds;
+    Timing seconds;
     std::uint64_t tests;
     extremes::Score score;
-    double ns_per_test() const { return tests ? 1e9 * seconds / static_cast<double>(tests) : 0.0; }
+    double ns_per_test() const { return tests ? 1e9 * seconds.median / static_cast<double>(tests) : 0.0; }
 };
 
 template <class T>
@@ -76,7 +77,7 @@ void measure(const Options& o, const std::string& group, const std::vector<std::
     for (const auto& [case_name, make] : cases) {
         const Probes probes = make();
         for (const auto& [name, test] : tests) {
-            const double seconds = median_seconds(o.repeat, [&, &test = test] { extremes::run(probes, test, answers); });
+            const Timing seconds = time_runs(o.repeat, [&, &test = test] { extremes::run(probes, test, answers); });
             rows.push_back({group, case_name, name, precision_name<T>(), seconds, extremes::tests_in(probes),
                             extremes::score(probes, answers)});
         }
@@ -128,17 +129,24 @@ void measure_triangles(const Options& o, std::vector<Measured>& rows)
         rows);
 }
 
-// A markdown table per group: a row per case, a column per test and precision, each cell the
-// wrong answers and the largest relative error of t; last, the median time per test.
-void print_summary(std::ostream& out, const std::vector<Measured>& rows, const std::string& group)
+// The lesson's tables per group: a row per case, a column per test and precision, each cell the
+// wrong answers and the largest relative error of t; then, apart (it is timed), the median time
+// per test over the cases.
+std::vector<LessonTable> summary(const std::vector<Measured>& rows, const std::string& group, int repeat)
 {
+    const std::map<std::string, std::string> case_names = {
+        {"D=1e2", "D = 1e2"}, {"D=1e3", "D = 1e3"}, {"D=1e4", "D = 1e4"}, {"D=1e5", "D = 1e5"}, {"D=1e6", "D = 1e6"},
+        {"r=1e-3", "r = 1e-3 at 1"}, {"r=1e-4", "r = 1e-4 at 1"}, {"huge", "huge (r = 1e4, eye 1 above)"},
+        {"inside", "from inside"}, {"around", "around faces (half hit)"}, {"vertex-aimed", "vertex-aimed"},
+        {"edge-aimed", "edge-aimed"}, {"inside-far-mesh", "inside the far mesh"}, {"degenerate", "degenerate"}};
+    const auto named = [&](const std::string& c) { return case_names.count(c) ? case_names.at(c) : c; };
     std::vector<std::string> columns, cases;
     std::map<std::pair<std::string, std::string>, const Measured*> cell;
     std::map<std::string, std::vector<double>> ns;
     for (const Measured& m : rows) {
         if (m.group != group)
             continue;
-        const std::string column = m.test + " " + m.precision;
+        const std::string column = (m.test == "moller-trumbore" ? std::string("M-T") : m.test) + " " + m.precision;
         if (std::find(columns.begin(), columns.end(), column) == columns.end())
             columns.push_back(column);
         if (std::find(cases.begin(), cases.end(), m.case_name) == cases.end())
@@ -146,30 +154,33 @@ void print_summary(std::ostream& out, const std::vector<Measured>& rows, const s
         cell[{m.case_name, column}] = &m;
         ns[column].push_back(m.ns_per_test());
     }
-    out << "\n| " << group << ": wrong hit/miss, max rel. t error |";
-    for (const std::string& c : columns)
-        out << ' ' << c << " |";
-    out << "\n|---|";
-    for (size_t k = 0; k < columns.size(); ++k)
-        out << "---|";
-    out << '\n';
+    LessonTable errors{"02." + group, {{"case"}}, {}, "Each cell: the share of wrong hit/miss answers, and the largest relative error of t, both against long double."};
+    LessonTable times{"02." + group + "_ns", {{""}}, {},
+                      "Release build, each test a call into the compiled code as the scene query makes it, median of " +
+                          std::to_string(repeat) + " runs a case, then the median over the cases (they mix hits and misses)."};
+    for (const std::string& column : columns) {
+        errors.columns.push_back({column});
+        times.columns.push_back({column, true});
+    }
     for (const std::string& c : cases) {
-        out << "| " << c << " |";
+        std::vector<std::string> cells{named(c)};
         for (const std::string& column : columns) {
             const Measured& m = *cell[{c, column}];
-            std::ostringstream s;
-            s << std::setprecision(2) << 100.0 * m.score.wrong_fraction() << "%, " << m.score.max_rel_t_error;
-            out << ' ' << s.str() << " |";
+            std::string text = significant(100.0 * m.score.wrong_fraction(), 2) + "%";
+            if (m.score.max_rel_t_error > 0.0)
+                text += ", " + scientific(m.score.max_rel_t_error, 2);
+            cells.push_back(text);
         }
-        out << '\n';
+        errors.row(cells);
     }
-    out << "| ns per test (median over the cases) |";
+    std::vector<std::string> cells{"**ns per test**"};
     for (const std::string& column : columns) {
         std::vector<double>& v = ns[column];
         std::sort(v.begin(), v.end());
-        out << ' ' << std::fixed << std::setprecision(2) << v[v.size() / 2] << std::defaultfloat << " |";
+        cells.push_back(fixed(v[v.size() / 2], 1));
     }
-    out << '\n';
+    times.row(cells);
+    return {errors, times};
 }
 
 std::string sibling_csv(const std::string& path, const std::string& suffix)
@@ -198,12 +209,14 @@ void sweep(const Options& o)
     print_trade_table(std::cout, wrong);
     std::cout << '\n';
     print_trade_table(std::cout, t_error);
-    print_summary(std::cout, rows, "sphere");
-    print_summary(std::cout, rows, "triangle");
+    std::vector<LessonTable> lesson = summary(rows, "sphere", o.repeat);
+    for (const LessonTable& t : summary(rows, "triangle", o.repeat))
+        lesson.push_back(t);
+    write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
     const std::string t_error_csv = sibling_csv(o.csv, "_t_error");
     write_trade_csv(o.csv, wrong);
     write_trade_csv(t_error_csv, t_error);
-    std::cout << "\nwrote " << o.csv << " and " << t_error_csv << '\n';
+    std::cout << "\nwrote " << o.csv << ", " << t_error_csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

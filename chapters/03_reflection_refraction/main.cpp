@@ -9,6 +9,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <functional>
@@ -70,10 +71,10 @@ std::vector<TradeRow> measure(const Options& o, const std::vector<Trial>& trials
     for (const Trial& t : trials) {
         reset_counters();
         const Image image = ch03::render_figure(settings, t.trace);
-        rows.push_back({t.knob, t.value, 0.0, total_rays(total_counts()), rmse(image, reference)});
+        rows.push_back({t.knob, t.value, {}, total_rays(total_counts()), rmse(image, reference)});
         renders.push_back([&settings, &t] { ch03::render_figure(settings, t.trace); });
     }
-    const std::vector<double> seconds = median_seconds_in_rounds(o.repeat, renders);
+    const std::vector<Timing> seconds = time_in_rounds(o.repeat, renders);
     for (size_t k = 0; k < rows.size(); ++k)
         rows[k].seconds = seconds[k];
     return rows;
@@ -82,7 +83,7 @@ std::vector<TradeRow> measure(const Options& o, const std::vector<Trial>& trials
 // The recursion's two limits against time and error: the depth with no weight cut-off, then the
 // cut-off at the reference's depth; then the figure's own settings with either reflectance. The
 // reference traces every path to `reference_depth` bounces with no cut-off.
-void sweep_render(const Options& o)
+void sweep_render(const Options& o, std::vector<LessonTable>& lesson)
 {
     TraceSettings deep;
     deep.max_depth = o.reference_depth;
@@ -123,12 +124,25 @@ void sweep_render(const Options& o)
         print_trade_table(std::cout, table);
         std::cout << '\n';
         write_trade_csv(path, table);
+        if (knob == "settings")
+            for (TradeRow& row : table.rows)
+                row.value = row.value == "reference"
+                                ? "the reference: depth " + std::to_string(o.reference_depth) + ", no cut-off, exact Fresnel"
+                            : row.value == "default_exact" ? "the figure's default: depth 8, min_weight 1e-3, exact Fresnel"
+                                                           : "the same with Schlick's reflectance";
+        LessonTable t = trade_lesson_table("03." + knob, table, knob == "min_weight" ? "min_weight (at depth 32)" : knob,
+                                           "RMSE", false, "");
+        t.caption = "Release build, " + std::to_string(o.common.width) + "x" + std::to_string(o.common.height) +
+                    ", one sample per pixel, median of " + std::to_string(o.repeat) +
+                    " rounds each rendering every row once; RMSE over linear RGB against depth " +
+                    std::to_string(o.reference_depth) + " with no cut-off.";
+        lesson.push_back(t);
     }
 }
 
 // Schlick against exact, per index of refraction and side, as a trade table (the error is the
 // largest absolute difference from the exact reflectance) and as the lesson's summary.
-void sweep_fresnel(const Options& o)
+void sweep_fresnel(const Options& o, std::vector<LessonTable>& lesson)
 {
     const std::vector<fresnel_table::Row> rows = fresnel_table::measure_all({1.333f, 1.5f, 2.4f}, o.angles, o.repeat);
     TradeTable table{"03_reflection_refraction", "max_abs_error_vs_exact_fresnel", {}};
@@ -138,11 +152,53 @@ void sweep_fresnel(const Options& o)
     print_trade_table(std::cout, table);
     write_trade_csv(sibling_csv(o.csv, "_schlick"), table);
 
+    // The lesson's view: per index, each Schlick formula's worst error and where; then the cost of a
+    // call, from the fastest to the slowest index.
+    const auto find = [&](float ior, const std::string& side, const std::string& formula) {
+        for (const fresnel_table::Row& r : rows)
+            if (r.ior == ior && r.side == side && r.formula == formula)
+                return r;
+        throw std::logic_error("fresnel_table has no row " + side + " " + formula);
+    };
+    const auto worst = [](const fresnel_table::Row& r) {
+        return fixed(r.max_error, 3) + " at " + fixed(r.at_degrees, 1) + " degrees";
+    };
+    LessonTable errors{"03.schlick",
+                       {{"ior"}, {"entering: Schlick of cos_i"}, {"leaving: Schlick of cos_t"},
+                        {"leaving: Schlick of cos_i, the bug"}},
+                       {},
+                       "The largest absolute difference from exact Fresnel over " + grouped(static_cast<unsigned long long>(o.angles)) +
+                           " angles of incidence from 0 to 90 degrees, and the angle where it occurs."};
+    for (const auto& [ior, name] : {std::pair<float, std::string>{1.333f, " (water)"}, {1.5f, " (glass)"}, {2.4f, " (diamond)"}})
+        errors.row({number(ior) + name, worst(find(ior, "entering", "schlick_cos_i")),
+                    worst(find(ior, "leaving", "schlick_cos_t")), "**" + worst(find(ior, "leaving", "schlick_cos_i_bug")) + "**"});
+    LessonTable cost{"03.schlick_ns",
+                     {{"ns per call (least to most over the three indices)"}, {"exact", true}, {"Schlick", true}},
+                     {},
+                     "One pass over the angles per row, median of " + std::to_string(o.repeat) + " rounds."};
+    for (const std::string side : {"entering", "leaving"}) {
+        std::vector<std::string> cells{side};
+        for (const std::string formula : {"exact", side == "entering" ? "schlick_cos_i" : "schlick_cos_t"}) {
+            double least = 1e300, most = 0.0;
+            for (const fresnel_table::Row& r : rows)
+                if (r.side == side && r.formula == formula) {
+                    const double ns = 1e9 * r.seconds.median / static_cast<double>(r.calls);
+                    least = std::min(least, ns);
+                    most = std::max(most, ns);
+                }
+            const std::string from = fixed(least, 1), to = fixed(most, 1);
+            cells.push_back(from == to ? from : from + " to " + to);
+        }
+        cost.row(cells);
+    }
+    lesson.push_back(errors);
+    lesson.push_back(cost);
+
     std::cout << "\n| ior | side | formula | max abs error | at (degrees) | ns per call |\n|---|---|---|---|---|---|\n";
     for (const fresnel_table::Row& r : rows)
         std::cout << "| " << number(r.ior) << " | " << r.side << " | " << r.formula << " | " << std::setprecision(3)
                   << r.max_error << " | " << std::fixed << std::setprecision(2) << r.at_degrees << " | "
-                  << 1e9 * r.seconds / static_cast<double>(r.calls) << " |" << std::defaultfloat
+                  << 1e9 * r.seconds.median / static_cast<double>(r.calls) << " |" << std::defaultfloat
                   << std::setprecision(6) << '\n';
 }
 
@@ -184,9 +240,12 @@ int main(int argc, char** argv)
         }
         if (o.sweep) {
             check_writable(o.csv, "CSV");
-            sweep_render(o);
-            sweep_fresnel(o);
-            std::cout << "\nwrote " << o.csv << " and its _weight, _settings and _schlick siblings\n";
+            std::vector<LessonTable> lesson;
+            sweep_render(o, lesson);
+            sweep_fresnel(o, lesson);
+            write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
+            std::cout << "\nwrote " << o.csv << ", its _weight, _settings and _schlick siblings, and "
+                      << tables_beside(o.csv) << '\n';
             return 0;
         }
         return write_figure(o.common, [&] { return ch03::render_figure(render_settings(o.common), o.trace); });

@@ -9,6 +9,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -55,6 +56,7 @@ FeelerSettings feelers_named(const Options& o)
 
 struct Case {
     std::string name;  // what the table's title says
+    std::string table;  // the lesson's table of it ("" for none)
     self_intersection::Surface surface;
     self_intersection::Side side;
     self_intersection::PointFrom from;
@@ -83,26 +85,40 @@ std::string power_of_ten(float scale)
 
 // A markdown table per case: a row per scale, a column per offset, each cell the re-hit rate and,
 // for front-side feelers, the rate of occluders missed. Every row also goes into the trade tables.
-void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& missed_table)
+void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& missed_table, std::vector<LessonTable>& lesson)
 {
     using namespace self_intersection;
     const std::vector<Case> cases = {
-        {"triangles (icosphere), feelers toward a light outside", Surface::triangles, Side::front, PointFrom::surface},
-        {"triangles, feelers into the object (back side)", Surface::triangles, Side::back, PointFrom::surface},
-        {"a sphere, feelers toward a light outside", Surface::sphere, Side::front, PointFrom::surface},
-        {"a floor through y = 0, 20 S square, feelers up", Surface::floor, Side::front, PointFrom::surface},
-        {"a floor through y = 0, feelers down (back side)", Surface::floor, Side::back, PointFrom::surface},
-        {"a floor through y = 0, feelers up, the test refusing t within its rounding (the kit's)", Surface::floor,
-         Side::front, PointFrom::surface, 3.0f, Test::bounded},
-        {"a floor through y = 0, feelers down, the test refusing t within its rounding (the kit's)", Surface::floor,
+        {"triangles (icosphere), feelers toward a light outside", "04.triangles", Surface::triangles, Side::front, PointFrom::surface},
+        {"triangles, feelers into the object (back side)", "", Surface::triangles, Side::back, PointFrom::surface},
+        {"a sphere, feelers toward a light outside", "", Surface::sphere, Side::front, PointFrom::surface},
+        {"a floor through y = 0, 20 S square, feelers up", "04.floor", Surface::floor, Side::front, PointFrom::surface},
+        {"a floor through y = 0, feelers down (back side)", "", Surface::floor, Side::back, PointFrom::surface},
+        {"a floor through y = 0, feelers up, the test refusing t within its rounding (the kit's)", "04.floor_bounded",
+         Surface::floor, Side::front, PointFrom::surface, 3.0f, Test::bounded},
+        {"a floor through y = 0, feelers down, the test refusing t within its rounding (the kit's)", "", Surface::floor,
          Side::back, PointFrom::surface, 3.0f, Test::bounded},
-        {"triangles seen from 1000 S away, hit point from the surface", Surface::triangles, Side::front, PointFrom::surface, 1000.0f},
-        {"triangles seen from 1000 S away, hit point from ray.at(t)", Surface::triangles, Side::front, PointFrom::ray, 1000.0f},
-        {"a sphere seen from 1000 S away, hit point from the surface", Surface::sphere, Side::front, PointFrom::surface, 1000.0f},
-        {"a sphere seen from 1000 S away, hit point from ray.at(t)", Surface::sphere, Side::front, PointFrom::ray, 1000.0f},
+        {"triangles, p from the surface", "04.far", Surface::triangles, Side::front, PointFrom::surface, 1000.0f},
+        {"triangles, p = ray.at(t)", "04.far", Surface::triangles, Side::front, PointFrom::ray, 1000.0f},
+        {"sphere, p from the surface", "04.far", Surface::sphere, Side::front, PointFrom::surface, 1000.0f},
+        {"sphere, p = ray.at(t)", "04.far", Surface::sphere, Side::front, PointFrom::ray, 1000.0f},
     };
+    // The lesson's names of the offsets, and the far eye's table: Wachter-Binder's re-hits, a row
+    // per case and a column per scale.
+    const std::map<std::string, std::string> offset_header = {
+        {"none", "none"}, {"t-min", "t-min = 1e-4"}, {"normal", "p + 1e-4 n"}, {"robust", "Wachter-Binder"}};
+    LessonTable far{"04.far", {{"S"}}, {}, "Wachter-Binder's re-hits with the eye 1000 S away; " +
+                                              grouped(static_cast<unsigned long long>(o.probes)) + " feelers a cell."};
+    for (const float scale : self_intersection::scales)
+        far.columns.push_back({power_of_ten(scale)});
     for (const Case& c : cases) {
         const bool front = c.side == Side::front;
+        LessonTable table{c.table, {{"S"}}, {},
+                          grouped(static_cast<unsigned long long>(o.probes)) + " feelers a cell" +
+                              (front ? ": re-hits / occluders missed." : ": re-hits.")};
+        for (const auto& [name, offset] : offsets)
+            table.columns.push_back({offset_header.at(name)});
+        std::vector<std::string> far_row{c.name};
         std::cout << "\n" << c.name << (front ? ": re-hits / occluders missed" : ": re-hits") << "\n\n| S |";
         for (const auto& [name, offset] : offsets)
             std::cout << ' ' << name << " |";
@@ -114,13 +130,15 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
             const ScaledScene scene = scaled_scene(scale);
             const std::vector<SurfacePoint> points = surface_points(scene, c.surface, o.probes, 1, c.from, c.eye_distance);
             std::cout << "| " << power_of_ten(scale) << " |";
+            std::vector<std::string> cells{power_of_ten(scale)};
             for (const auto& [name, offset] : offsets) {
                 Score score;
-                const double seconds = median_seconds(1, [&, &offset = offset] { score = measure(scene, points, offset, c.side, 2, c.test); });
-                std::cout << ' ' << percent(score.rehit_rate());
-                if (front)
-                    std::cout << " / " << percent(score.missed_rate());
-                std::cout << " |";
+                const Timing seconds = time_runs(1, [&, &offset = offset] { score = measure(scene, points, offset, c.side, 2, c.test); });
+                const std::string cell = percent(score.rehit_rate()) + (front ? " / " + percent(score.missed_rate()) : "");
+                std::cout << ' ' << cell << " |";
+                cells.push_back(cell);
+                if (offset == Offset::robust)
+                    far_row.push_back(percent(score.rehit_rate()));
                 std::ostringstream value;
                 value << (c.surface == Surface::sphere ? "sphere" : c.surface == Surface::floor ? "floor" : "triangles") << ':' << (front ? "front" : "back")
                       << ':' << (c.from == PointFrom::surface ? "surface" : "ray") << ':' << c.eye_distance << "S:"
@@ -133,8 +151,14 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
                                                  score.feelers, score.missed_rate()});
             }
             std::cout << '\n';
+            table.row(cells);
         }
+        if (c.table == "04.far")
+            far.row(far_row);
+        else if (!c.table.empty())
+            lesson.push_back(table);
     }
+    lesson.push_back(far);
 }
 
 // --- The cost of shadow feelers: any-hit against closest-hit ---
@@ -143,7 +167,7 @@ void measure_offsets(const Options& o, TradeTable& rehit_table, TradeTable& miss
 // interleaved (one of each per round, --repeat rounds) so that a change in the machine's load
 // falls on every row alike; each row's time is its median. The feelers' own cost is a row's time
 // minus that of the row without them.
-void measure_feeler_cost(const Options& o, TradeTable& table)
+LessonTable measure_feeler_cost(const Options& o, TradeTable& table)
 {
     RenderSettings settings = render_settings(o.common);
     settings.show_progress = false;
@@ -168,28 +192,32 @@ void measure_feeler_cost(const Options& o, TradeTable& table)
     const auto tests_of = [&](size_t q) {
         return static_cast<double>(counts[q][static_cast<size_t>(Counter::intersection_tests)]);
     };
-    std::cout << "\nthe figure at " << settings.width << "x" << settings.height << ", " << settings.spp
-              << " spp, median of " << o.repeat << " interleaved runs\n\n"
-              << "| feelers | seconds | rays | rays/second | shadow rays | tests per shadow ray | seconds in feelers "
-                 "| vs any-hit | RMSE vs any-hit |\n|---|---|---|---|---|---|---|---|---|\n";
+    LessonTable lesson{"04.cost",
+                       {{"feelers"}, {"seconds", true}, {"rays"}, {"rays/second", true}, {"shadow rays"},
+                        {"tests per shadow ray"}, {"seconds in feelers", true}, {"vs any-hit", true}, {"RMSE vs any-hit"}},
+                       {},
+                       "The figure at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
+                           std::to_string(settings.spp) + " spp, release build, median of " + std::to_string(o.repeat) +
+                           " interleaved runs."};
     for (size_t q = 0; q < queries.size(); ++q) {
-        const double seconds = median(runs[q]);
+        const Timing timing = timing_of(runs[q]);
+        const double seconds = timing.median;
         const std::uint64_t rays = total_rays(counts[q]);
         const auto shadow = counts[q][static_cast<size_t>(Counter::shadow_rays)];
         const double per_shadow_ray = shadow ? (tests_of(q) - tests_of(0)) / static_cast<double>(shadow) : 0.0;
         const double error = rmse(images[q], images[1]);
-        std::cout << "| " << queries[q].first << " | " << std::fixed << std::setprecision(3) << seconds << " | " << rays
-                  << " | " << std::setprecision(0) << static_cast<double>(rays) / seconds << " | " << shadow << " | "
-                  << std::setprecision(1) << per_shadow_ray << " | " << std::setprecision(3) << seconds - seconds_off
-                  << " | " << std::setprecision(2) << (seconds - seconds_off) / feelers_any_hit << " | "
-                  << std::scientific << std::setprecision(2) << error << std::defaultfloat << " |\n";
-        table.rows.push_back({"feelers", queries[q].first, seconds, rays, error});
+        lesson.row({queries[q].first, fixed(seconds, 3) + spread(timing), grouped(rays),
+                    fixed(static_cast<double>(rays) / seconds / 1e3, 0) + " k", grouped(shadow), fixed(per_shadow_ray, 1),
+                    fixed(seconds - seconds_off, 3), fixed((seconds - seconds_off) / feelers_any_hit, 2),
+                    scientific(error, 3)});
+        table.rows.push_back({"feelers", queries[q].first, timing, rays, error});
     }
+    return lesson;
 }
 
 // Where the any-hit query saves: every feeler the figure sends, asked both ways on one thread, its
 // intersection tests counted and its time taken, with blocked and unblocked feelers apart.
-void feeler_tests_by_outcome(const Options& o)
+LessonTable feeler_tests_by_outcome(const Options& o)
 {
     const Camera cam = make_camera(ch04::figure_camera(o.common.width, o.common.height));
     const LitScene scene = ch04::figure_scene();
@@ -230,16 +258,19 @@ void feeler_tests_by_outcome(const Options& o)
                 }
             }
         }
-    std::cout << "\nper feeler, asked both ways (" << scene.spheres.size() + scene.triangles.size() << " objects)\n\n"
-              << "| feelers | share | any-hit tests | closest-hit tests | any-hit ns | closest-hit ns |\n"
-                 "|---|---|---|---|---|---|\n";
+    LessonTable lesson{"04.per_feeler",
+                       {{"feelers"}, {"share"}, {"any-hit tests"}, {"closest-hit tests"}, {"any-hit ns", true},
+                        {"closest-hit ns", true}},
+                       {},
+                       "Every feeler of the figure (" + std::to_string(scene.spheres.size() + scene.triangles.size()) +
+                           " objects) asked both ways, one thread, release build."};
     for (const auto& [name, t] : {std::pair<const char*, const Tally&>{"blocked", blocked}, {"unblocked", seen}, {"all", all}}) {
         const double n = static_cast<double>(std::max<std::uint64_t>(1, t.feelers));
-        std::cout << "| " << name << " | " << percent(static_cast<double>(t.feelers) / static_cast<double>(std::max<std::uint64_t>(1, all.feelers)))
-                  << " | " << std::fixed << std::setprecision(1) << static_cast<double>(t.tests[0]) / n << " | "
-                  << static_cast<double>(t.tests[1]) / n << " | " << std::setprecision(0) << 1e9 * t.seconds[0] / n
-                  << " | " << 1e9 * t.seconds[1] / n << std::defaultfloat << " |\n";
+        lesson.row({name, percent(static_cast<double>(t.feelers) / static_cast<double>(std::max<std::uint64_t>(1, all.feelers))),
+                    fixed(static_cast<double>(t.tests[0]) / n, 1), fixed(static_cast<double>(t.tests[1]) / n, 1),
+                    fixed(1e9 * t.seconds[0] / n, 0), fixed(1e9 * t.seconds[1] / n, 0)});
     }
+    return lesson;
 }
 
 void sweep(const Options& o)
@@ -248,14 +279,16 @@ void sweep(const Options& o)
     TradeTable rehits{"04_shadow_feelers", "fraction of feelers re-hitting their own surface", {}};
     TradeTable missed{"04_shadow_feelers", "fraction of occluders 0.25 S above the surface missed", {}};
     TradeTable cost{"04_shadow_feelers", "rmse_linear_rgb_vs_any_hit_feelers", {}};
-    measure_offsets(o, rehits, missed);
-    measure_feeler_cost(o, cost);
-    feeler_tests_by_outcome(o);
+    std::vector<LessonTable> lesson;
+    measure_offsets(o, rehits, missed, lesson);
+    lesson.push_back(measure_feeler_cost(o, cost));
+    lesson.push_back(feeler_tests_by_outcome(o));
     const std::string missed_csv = csv_beside(o.csv, "_missed"), cost_csv = csv_beside(o.csv, "_cost");
     write_trade_csv(o.csv, rehits);
     write_trade_csv(missed_csv, missed);
     write_trade_csv(cost_csv, cost);
-    std::cout << "\nwrote " << o.csv << ", " << missed_csv << " and " << cost_csv << '\n';
+    write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
+    std::cout << "\nwrote " << o.csv << ", " << missed_csv << ", " << cost_csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -57,7 +58,7 @@ LightSampling sampling_of(const Options& o)
 // at one sample per pixel (the pixel's centre), so that all the noise is the light sampling's.
 // The reference is the same panel with reference_samples stratified samples per light, from
 // another seed, so that its noise is unrelated to any row's. Times are taken in rounds (chapter
-// 03's median_seconds_in_rounds), so that a load that comes and goes falls on all rows alike.
+// 03's time_in_rounds), so that a load that comes and goes falls on all rows alike.
 void sweep(const Options& o)
 {
     RenderSettings settings = render_settings(o.common);
@@ -95,33 +96,33 @@ void sweep(const Options& o)
     std::vector<std::function<void()>> renders;
     for (const Trial& t : trials)
         renders.push_back([&settings, &scene, sampling = t.sampling] { ch05::render_panel(settings, scene, sampling); });
-    const std::vector<double> times = median_seconds_in_rounds(o.repeat, renders);
+    const std::vector<Timing> times = time_in_rounds(o.repeat, renders);
 
     TradeTable table{"05_soft_shadows",
                      "rmse_linear_rgb_vs_" + std::to_string(o.reference_samples) + "_stratified_samples_per_light", {}};
-    std::cout << "the soft panel at " << settings.width << "x" << settings.height
-              << ", 1 sample per pixel (its centre), 2 area lights; median of " << o.repeat
-              << " interleaved runs; RMSE in linear RGB against " << o.reference_samples
-              << " stratified samples per light\n\n"
-              << "| scheme | samples per light | seconds | rays | rays/second | RMSE | RMSE x sqrt(N) | order since N/4 |\n"
-              << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    LessonTable lesson{"05.schemes",
+                       {{"scheme"}, {"samples per light"}, {"seconds", true}, {"rays"}, {"rays/second", true}, {"RMSE"},
+                        {"RMSE × √N"}, {"order since N/4"}},
+                       {},
+                       "The soft panel at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                           ", one sample per pixel (its centre), release build, one thread per core, median of " +
+                           std::to_string(o.repeat) + " interleaved runs; RMSE over linear RGB against " +
+                           std::to_string(o.reference_samples) + " stratified samples per light."};
     for (size_t k = 0; k < trials.size(); ++k) {
         const Trial& t = trials[k];
-        const double seconds = times[k];
+        const Timing seconds = times[k];
         const double error = rmse(images[k], reference);
         const double n = static_cast<double>(t.sampling.samples);
-        std::cout << "| " << t.name << " | " << t.sampling.samples << " | " << std::fixed << std::setprecision(4)
-                  << seconds << " | " << rays[k] << " | " << std::setprecision(0)
-                  << static_cast<double>(rays[k]) / seconds << " | " << std::scientific << std::setprecision(2)
-                  << error << " | " << error * std::sqrt(n) << " | ";
         // The measured order p in error ~ N^-p, from this row and the one with a quarter the samples.
-        if (t.sampling.samples > 1)
-            std::cout << std::fixed << std::setprecision(2)
-                      << std::log(rmse(images[k - 1], reference) / error) / std::log(4.0);
-        std::cout << std::defaultfloat << " |\n";
+        const std::string order =
+            t.sampling.samples > 1 ? fixed(std::log(rmse(images[k - 1], reference) / error) / std::log(4.0), 2) : "";
+        lesson.row({t.name, std::to_string(t.sampling.samples), significant(seconds.median, 3) + spread(seconds),
+                    grouped(rays[k]), fixed(static_cast<double>(rays[k]) / seconds.median / 1e6, 1) + " M",
+                    scientific(error, 3), scientific(error * std::sqrt(n), 3), order});
         table.rows.push_back({"scheme:samples_per_light", t.name + ":" + std::to_string(t.sampling.samples), seconds,
                               rays[k], error});
     }
+    write_lesson_tables(tables_beside(o.csv), {lesson}, std::cout);
     // Random rows from most samples to fewest, then stratified from fewest to most: the plot's
     // line (common/trade_plot.gnuplot joins the rows in order) runs down one scheme and up the
     // other, through the 1-sample point they share, instead of jumping back across the plot.
@@ -129,7 +130,7 @@ void sweep(const Options& o)
     std::cout << '\n';
     print_trade_table(std::cout, table);
     write_trade_csv(o.csv, table);
-    std::cout << "wrote " << o.csv << '\n';
+    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

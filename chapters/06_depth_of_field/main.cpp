@@ -7,6 +7,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -44,14 +45,6 @@ Image render_with(const Options& o, int spp, std::uint64_t seed)
     return ch06::render_figure(settings, lens_of(o));
 }
 
-// The middle of `seconds` (the mean of the two middle ones for an even count).
-double median(std::vector<double> seconds)
-{
-    std::sort(seconds.begin(), seconds.end());
-    const size_t n = seconds.size();
-    return n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
-}
-
 // Lens samples per pixel against time and error: RMSE in linear RGB against a many-sample render.
 // Each sample of a pixel is one camera ray from its own lens point (and its own point of the
 // pixel), so lens samples per pixel are the render's samples per pixel. The reference has a seed of
@@ -80,11 +73,17 @@ void sweep(const Options& o)
         }
     TradeTable table{"06_depth_of_field", "rmse_linear_rgb_vs_" + std::to_string(o.reference_spp) + "spp", {}};
     for (size_t k = 0; k < counts.size(); ++k)
-        table.rows.push_back({"lens_samples", std::to_string(counts[k]), median(seconds[k]), rays[k],
+        table.rows.push_back({"lens_samples", std::to_string(counts[k]), timing_of(seconds[k]), rays[k],
                               rmse(images[k], reference)});
     print_trade_table(std::cout, table);
     write_trade_csv(o.csv, table);
-    std::cout << "wrote " << o.csv << '\n';
+    write_lesson_tables(tables_beside(o.csv),
+                        {trade_lesson_table("06.lens_samples", table, "lens samples per pixel",
+                                            "RMSE vs " + std::to_string(o.reference_spp) + " spp", true,
+                                            "Release build, one thread per core, median of " + std::to_string(o.repeat) +
+                                                " interleaved runs; rays counts the camera rays and the shadow feelers of one render.")},
+                        std::cout);
+    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 // How far each sphere lies and how widely the lens blurs it: what the figure should show.

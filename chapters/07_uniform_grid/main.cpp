@@ -5,6 +5,7 @@
 // bytes, tests, cells and render time, and brute force against the grid as the scene grows.
 #include "07_uniform_grid/figure.hpp"
 #include "07_uniform_grid/measure.hpp"
+#include "common/lesson_table.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
@@ -67,7 +68,7 @@ SceneProgram scene_program(const Options& o)
 
 struct Measured {
     int objects = 0;
-    double build_ms = 0.0, render_ms = 0.0;
+    Timing build_ms, render_ms;
     std::size_t bytes = 0;
     GridStats grid;
     double tests_per_ray = 0.0, cells_per_ray = 0.0;
@@ -107,37 +108,53 @@ std::ofstream open_csv(const std::string& path, const std::string& header)
     return out;
 }
 
+std::string ms(const Timing& t)
+{
+    return fixed(t.median, 1) + spread(t);
+}
+
+std::string settings_text(const RenderSettings& settings)
+{
+    return std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
+           (settings.threads == 1 ? std::string("1 thread") : std::to_string(settings.threads) + " threads (0: all)");
+}
+
 // The density lambda against the grid's cost, on the figure's scene.
-void sweep_lambda(const Options& o, const RenderSettings& settings)
+LessonTable sweep_lambda(const Options& o, const RenderSettings& settings)
 {
     const NffScene nff = ch07::figure_scene();
     std::ofstream csv = open_csv(o.csv, "scene,objects,lambda,resolution,cells,empty_cells_percent,references_per_object,"
-                                        "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms");
-    std::cout << "\nlambda (cells per object) on " << nff.name << ", " << settings.width << "x" << settings.height
-              << ", " << settings.threads << " thread(s) (0: all), medians of " << o.repeat << " runs\n\n"
-              << "| lambda | resolution | empty cells | refs/object | MB | build ms | tests/ray | cells/ray | render ms |\n"
-                 "|---|---|---|---|---|---|---|---|---|\n";
+                                        "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms,build_ms_min,build_ms_max,"
+                                        "render_ms_min,render_ms_max,runs");
+    LessonTable table{"07.lambda",
+                      {{"lambda"}, {"resolution"}, {"empty cells"}, {"refs/object"}, {"MB"}, {"build ms", true},
+                       {"tests/ray"}, {"cells/ray"}, {"render ms", true}},
+                      {},
+                      "The " + nff.name + ", " + settings_text(settings) + ", release build, medians of " +
+                          std::to_string(o.repeat) + " runs."};
     for (const float lambda : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f, 32.0f}) {
         const Measured m = measure(nff, "grid", lambda, settings, o.repeat);
         std::ostringstream res;
         res << m.grid.resolution.x << 'x' << m.grid.resolution.y << 'x' << m.grid.resolution.z;
         const double empty = 100.0 * static_cast<double>(m.grid.empty_cells) / static_cast<double>(m.grid.cells);
         const double refs = static_cast<double>(m.grid.references) / m.objects;
-        std::cout << std::fixed << "| " << std::setprecision(3) << lambda << " | " << res.str() << " | "
-                  << std::setprecision(0) << empty << "% | " << std::setprecision(2) << refs << " | "
-                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1) << m.build_ms << " | "
-                  << m.tests_per_ray << " | " << m.cells_per_ray << " | " << m.render_ms << " |\n";
+        table.row({fixed(lambda, 3), res.str(), fixed(empty, 0) + "%", fixed(refs, 2),
+                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.tests_per_ray, 1),
+                   fixed(m.cells_per_ray, 1), ms(m.render_ms)});
         csv << '"' << nff.name << "\"," << m.objects << ',' << lambda << ',' << res.str() << ',' << m.grid.cells << ','
-            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms << ',' << m.tests_per_ray << ','
-            << m.cells_per_ray << ',' << m.render_ms << '\n';
+            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms.median << ',' << m.tests_per_ray << ','
+            << m.cells_per_ray << ',' << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ','
+            << m.render_ms.min << ',' << m.render_ms.max << ',' << m.runs << '\n';
     }
+    return table;
 }
 
 // Brute force against the grid on one scene, same rays: one table row each, and the images must
 // be the same byte for byte (and the ray counts equal), or the kit has a bug.
-void compare_on(const NffScene& nff, const Options& o, const RenderSettings& settings, std::ofstream& csv)
+void compare_on(const NffScene& nff, const Options& o, const RenderSettings& settings, std::ofstream& csv,
+                LessonTable& table)
 {
-    // Brute force on the largest scenes takes minutes a render: one run there, said in the table.
+    // Brute force on the largest scenes takes minutes a render: one run there, said in the caption.
     const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.repeat;
     const Measured brute = measure(nff, "brute", o.lambda, settings, brute_runs);
     const Measured grid = measure(nff, "grid", o.lambda, settings, o.repeat);
@@ -145,21 +162,21 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
         throw std::runtime_error("the grid's image or ray count differs from brute force's on " + nff.name +
                                  ": a bug of the kit");
     for (const auto& [name, m] : {std::pair<const char*, const Measured&>{"brute", brute}, {"grid", grid}}) {
-        std::cout << std::fixed << "| " << nff.name << " | " << m.objects << " | " << name << " | "
-                  << std::setprecision(1) << m.tests_per_ray << " | " << m.cells_per_ray << " | " << std::setprecision(1)
-                  << m.render_ms << " | " << m.build_ms << " | " << std::setprecision(2)
-                  << static_cast<double>(m.bytes) / 1e6 << " | " << m.runs << " | "
-                  << std::setprecision(0) << brute.render_ms / m.render_ms << "x |\n";
+        const double speedup = brute.render_ms.median / m.render_ms.median;
+        table.row({nff.name, std::to_string(m.objects), name, fixed(m.tests_per_ray, 1), fixed(m.cells_per_ray, 1),
+                   ms(m.render_ms), ms(m.build_ms), fixed(static_cast<double>(m.bytes) / 1e6, 2),
+                   fixed(speedup, 0) + "x"});
         csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << m.tests_per_ray << ',' << m.cells_per_ray
-            << ',' << m.render_ms << ',' << m.build_ms << ',' << m.bytes << ',' << m.runs << ','
-            << brute.render_ms / m.render_ms << '\n';
+            << ',' << m.render_ms.median << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.runs << ','
+            << speedup << ',' << m.render_ms.min << ',' << m.render_ms.max << ',' << m.build_ms.min << ','
+            << m.build_ms.max << '\n';
     }
 }
 
 // The next-boundary t two ways, against the exact one: boundary_t (t_first + k t_delta in double,
 // rounded once) and t_max += t_delta in float, once per step. Cells of size 1 from a random origin
 // in the first cell along random directions; the error is in cells, |t - t_exact| |d_x| / s.
-void measure_drift(int rays)
+LessonTable measure_drift(int rays)
 {
     Rng rng(2026, 7);
     std::vector<double> direct[2], summed[2];
@@ -181,26 +198,30 @@ void measure_drift(int rays)
             }
         }
     }
-    std::cout << "\nthe next boundary's t after k steps, error in cells (" << rays << " rays, median / max)\n\n"
-              << "| k | boundary_t: t_first + k t_delta | t_max += t_delta |\n|---|---|---|\n";
-    for (int c = 0; c < 2; ++c) {
-        const auto worst = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
-        std::cout << std::scientific << std::setprecision(1) << "| " << checks[c] << " | " << median(direct[c]) << " / "
-                  << worst(direct[c]) << " | " << median(summed[c]) << " / " << worst(summed[c]) << " |\n"
-                  << std::defaultfloat;
-    }
+    LessonTable table{"07.drift",
+                      {{"steps k"}, {"t_first + k t_delta (double, rounded once)"}, {"t_max += t_delta (float)"}},
+                      {},
+                      "The next boundary's t after k steps, error in cells, median / max over " + std::to_string(rays) +
+                          " seeded rays."};
+    const auto worst = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+    const auto cells = [](double v) { return v < 0.01 ? scientific(v, 2) : v >= 100.0 ? fixed(v, 0) : significant(v, 2); };
+    for (int c = 0; c < 2; ++c)
+        table.row({"10^" + std::to_string(c + 4), cells(median(direct[c])) + " / " + cells(worst(direct[c])),
+                   cells(median(summed[c])) + " / " + cells(worst(summed[c]))});
+    return table;
 }
 
-const char* comparison_header = "scene,objects,structure,tests_per_ray,cells_per_ray,render_ms,build_ms,bytes,runs,speedup";
+const char* comparison_header = "scene,objects,structure,tests_per_ray,cells_per_ray,render_ms,build_ms,bytes,runs,speedup,"
+                                "render_ms_min,render_ms_max,build_ms_min,build_ms_max";
 
-void print_comparison_heading(const std::string& what, const RenderSettings& settings, int repeat)
+LessonTable comparison_table(const std::string& name, const std::string& what, const RenderSettings& settings, int repeat)
 {
-    std::cout << "\n" << what << ", " << settings.width << "x" << settings.height << ", "
-              << (settings.threads == 1 ? std::string("1 thread") : std::to_string(settings.threads) + " threads (0: all)")
-              << ", images identical to brute force; "
-              << "medians of " << repeat << " runs (runs column)\n\n"
-              << "| scene | objects | structure | tests/ray | cells/ray | render ms | build ms | MB | runs | speedup |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|\n";
+    return {name,
+            {{"scene"}, {"objects"}, {"structure"}, {"tests/ray"}, {"cells/ray"}, {"render ms", true},
+             {"build ms", true}, {"MB"}, {"speedup", true}},
+            {},
+            what + ", " + settings_text(settings) + ", release build, images identical to brute force; medians of " +
+                std::to_string(repeat) + " runs (brute force on scenes over 20,000 objects: 1 run)."};
 }
 
 void sweep(const Options& o, const CommandLine& cli)
@@ -209,19 +230,21 @@ void sweep(const Options& o, const CommandLine& cli)
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
     std::ofstream n_csv = open_csv(csv_beside(o.csv, "_n"), comparison_header);
     std::ostringstream what;
-    what << "brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
-    print_comparison_heading(what.str(), settings, o.repeat);
+    what << "Brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
+    LessonTable growth = comparison_table("07.growth", what.str(), settings, o.repeat);
     for (int depth = 1; depth <= 8; ++depth)
-        compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv);
+        compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
+                   growth);
     std::ofstream scenes_csv = open_csv(csv_beside(o.csv, "_scenes"), comparison_header);
-    print_comparison_heading("the kit's generated scenes near 10k objects", settings, o.repeat);
-    compare_on(ch07::generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv);
-    compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv);
-    compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv);
-    compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv);
-    sweep_lambda(o, sweep_settings(o.common, cli, 320, 180));
-    measure_drift(1000);
-    std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << " and " << csv_beside(o.csv, "_scenes") << '\n';
+    LessonTable scenes = comparison_table("07.scenes", "The kit's generated scenes near 10k objects", settings, o.repeat);
+    compare_on(ch07::generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv, scenes);
+    compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv, scenes);
+    compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv, scenes);
+    compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv, scenes);
+    const LessonTable lambda = sweep_lambda(o, sweep_settings(o.common, cli, 320, 180));
+    write_lesson_tables(tables_beside(o.csv), {growth, scenes, lambda, measure_drift(1000)}, std::cout);
+    std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << ", " << csv_beside(o.csv, "_scenes")
+              << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "08_mailboxing/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -106,7 +107,7 @@ std::vector<RaySet> ray_sets(const SceneRender& file, const LitScene& scene)
 }
 
 struct Run {
-    double ms = 0.0;
+    Timing ms;
     std::uint64_t tests = 0, saved = 0;
     std::vector<ObjectHit> answers;
 };
@@ -154,8 +155,8 @@ std::pair<Run, Run> compare(const Accelerator& a, const Accelerator& b, const Ra
         ta.push_back(timed_pass(a, set, objects));
         tb.push_back(timed_pass(b, set, objects));
     }
-    runs.first.ms = median(ta);
-    runs.second.ms = median(tb);
+    runs.first.ms = timing_of(ta);
+    runs.second.ms = timing_of(tb);
     return runs;
 }
 
@@ -175,12 +176,16 @@ void sweep(const Options& o, const CommandLine& cli)
     std::cerr << "measuring what the mailboxes save, by density and ray kind, on three scenes...\n";
     std::ofstream csv(o.csv);
     csv << "scene,objects,lambda,references_per_object,kind,count,tests_per_ray_grid,tests_per_ray_mailboxes,"
-           "tests_saved_percent,ms_grid,ms_mailboxes,time_saved_percent\n";
-    std::cout << "\nthe grid with and without mailboxes, the same rays (" << settings.width << "x" << settings.height
-              << " primary rays, their shadow feelers and mirror rays), 1 thread, medians of " << o.repeat
-              << " interleaved runs; answers identical\n\n"
-              << "| scene | lambda | refs/object | rays | count | tests/ray | with mailboxes | tests saved | ms | ms with "
-                 "mailboxes | time saved |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "tests_saved_percent,ms_grid,ms_mailboxes,time_saved_percent,ms_grid_min,ms_grid_max,ms_mailboxes_min,"
+           "ms_mailboxes_max,runs\n";
+    LessonTable table{"08.saved",
+                      {{"scene"}, {"lambda"}, {"refs/object"}, {"rays"}, {"count"}, {"tests/ray"}, {"with mailboxes"},
+                       {"tests saved"}, {"ms", true}, {"ms with mailboxes", true}, {"time saved", true}},
+                      {},
+                      "The grid with and without mailboxes on the same rays (" + std::to_string(settings.width) + "x" +
+                          std::to_string(settings.height) +
+                          " primary rays, their shadow feelers and mirror rays), release build, 1 thread, medians of " +
+                          std::to_string(o.repeat) + " interleaved runs; the answers of every ray identical."};
     const std::vector<NffScene> scenes = {ch08::figure_scene(),
                                           ch07::generated_scene(write_mountain, 7, "mountain, depth 7"),
                                           ch07::generated_scene(write_sphereflake, 4, "sphereflake, depth 4")};
@@ -201,19 +206,20 @@ void sweep(const Options& o, const CommandLine& cli)
                     throw std::runtime_error("the grid with mailboxes answered differently on " + nff.name + ": a bug of the kit");
                 const double n = static_cast<double>(std::max<size_t>(1, set.rays.size()));
                 const double saved = a.tests ? 100.0 * (1.0 - static_cast<double>(b.tests) / a.tests) : 0.0;
-                const double faster = 100.0 * (1.0 - b.ms / a.ms);
-                std::cout << std::fixed << "| " << nff.name << " | " << std::setprecision(0) << lambda << " | "
-                          << std::setprecision(2) << refs << " | " << set.kind << " | " << set.rays.size() << " | "
-                          << std::setprecision(1) << a.tests / n << " | " << b.tests / n << " | " << std::setprecision(0)
-                          << saved << "% | " << std::setprecision(1) << a.ms << " | " << b.ms << " | "
-                          << std::setprecision(0) << faster << "% |\n";
+                const double faster = 100.0 * (1.0 - b.ms.median / a.ms.median);
+                table.row({nff.name, fixed(lambda, 0), fixed(refs, 2), set.kind, std::to_string(set.rays.size()),
+                           fixed(a.tests / n, 1), fixed(b.tests / n, 1), fixed(saved, 0) + "%",
+                           fixed(a.ms.median, 1) + spread(a.ms), fixed(b.ms.median, 1) + spread(b.ms),
+                           fixed(faster, 0) + "%"});
                 csv << '"' << nff.name << "\"," << objects.size() << ',' << lambda << ',' << refs << ',' << set.kind << ','
                     << set.rays.size() << ',' << a.tests / n << ',' << b.tests / n << ',' << saved << ','
-                    << a.ms << ',' << b.ms << ',' << faster << '\n';
+                    << a.ms.median << ',' << b.ms.median << ',' << faster << ',' << a.ms.min << ',' << a.ms.max << ','
+                    << b.ms.min << ',' << b.ms.max << ',' << a.ms.runs << '\n';
             }
         }
     }
-    std::cout << "\nwrote " << o.csv << '\n';
+    write_lesson_tables(tables_beside(o.csv), {table}, std::cout);
+    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "09_hashed_voxels/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -80,7 +81,7 @@ SceneProgram scene_program(const Options& o)
 
 struct Measured {
     std::string structure;
-    double build_ms = 0.0, render_ms = 0.0;
+    Timing build_ms, render_ms;
     std::size_t bytes = 0;
     cell3 resolution{1};
     long long occupied = 0, references = 0, collisions = 0;
@@ -125,6 +126,11 @@ std::string resolution(const cell3& n)
     return s.str();
 }
 
+std::string ms(const Timing& t)
+{
+    return fixed(t.median, 1) + spread(t);
+}
+
 void sweep(const Options& o, const CommandLine& cli)
 {
     const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
@@ -133,55 +139,68 @@ void sweep(const Options& o, const CommandLine& cli)
     const Measured brute = measure(stadium, "brute", 1.0f, 0, settings, 1);
     std::ofstream csv(o.csv);
     csv << "scene,structure,lambda,resolution,occupied_cells,references,table_size,collisions,bytes,build_ms,"
-           "tests_per_ray,cells_per_ray,lookups_per_ray,skipped_per_ray,render_ms\n";
-    std::cout << "\nthe teapot in a stadium (" << brute.tests_per_ray << " tests per ray by brute force, "
-              << std::fixed << std::setprecision(0) << brute.render_ms << " ms), " << settings.width << "x"
-              << settings.height << ", 1 thread, medians of " << o.repeat << " runs; every image identical to brute "
-                 "force's\n\n| structure | lambda | resolution | cells | occupied | MB | bytes/reference | build ms | "
-                 "tests/ray | cells/ray | lookups/ray | skipped by bits/ray | render ms |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+           "tests_per_ray,cells_per_ray,lookups_per_ray,skipped_per_ray,render_ms,build_ms_min,build_ms_max,"
+           "render_ms_min,render_ms_max,runs\n";
+    const std::string how = std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                            ", release build, 1 thread, medians of " + std::to_string(o.repeat) + " runs";
+    LessonTable structures{
+        "09.structures",
+        {{"structure"}, {"lambda"}, {"resolution"}, {"cells"}, {"occupied"}, {"MB"}, {"bytes/reference"},
+         {"build ms", true}, {"tests/ray"}, {"cells/ray"}, {"lookups/ray"}, {"skipped by bits/ray"}, {"render ms", true}},
+        {},
+        "The teapot in a stadium (" + fixed(brute.tests_per_ray, 0) + " tests per ray by brute force), " + how +
+            "; every image identical to brute force's."};
     const auto row = [&](const Measured& m, float lambda) {
         if (m.pixels != brute.pixels)
             throw std::runtime_error("the " + m.structure + "'s image differs from brute force's: a bug of the kit");
         const double cells = static_cast<double>(m.resolution.x) * m.resolution.y * m.resolution.z;
-        std::cout << std::fixed << "| " << m.structure << " | " << std::setprecision(0) << lambda << " | "
-                  << resolution(m.resolution) << " | " << std::setprecision(1) << cells / 1e6 << " M | "
-                  << (m.occupied ? std::to_string(m.occupied) : std::string("-")) << " | " << std::setprecision(1)
-                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
-                  << (m.references ? static_cast<double>(m.bytes) / m.references : 0.0) << " | " << m.build_ms << " | "
-                  << m.tests_per_ray << " | " << m.cells_per_ray << " | " << m.lookups_per_ray << " | "
-                  << m.skipped_per_ray << " | " << m.render_ms << " |\n";
+        structures.row({m.structure, fixed(lambda, 0), resolution(m.resolution), fixed(cells / 1e6, 1) + " M",
+                        m.occupied ? grouped(static_cast<unsigned long long>(m.occupied)) : std::string("-"),
+                        fixed(static_cast<double>(m.bytes) / 1e6, 1),
+                        fixed(m.references ? static_cast<double>(m.bytes) / m.references : 0.0, 1), ms(m.build_ms),
+                        fixed(m.tests_per_ray, 1), fixed(m.cells_per_ray, 1), fixed(m.lookups_per_ray, 1),
+                        fixed(m.skipped_per_ray, 1), ms(m.render_ms)});
         csv << "\"" << stadium.name << "\"," << m.structure << ',' << lambda << ',' << resolution(m.resolution) << ','
             << m.occupied << ',' << m.references << ',' << m.M << ',' << m.collisions << ',' << m.bytes << ','
-            << m.build_ms << ',' << m.tests_per_ray << ',' << m.cells_per_ray << ',' << m.lookups_per_ray << ','
-            << m.skipped_per_ray << ',' << m.render_ms << '\n';
+            << m.build_ms.median << ',' << m.tests_per_ray << ',' << m.cells_per_ray << ',' << m.lookups_per_ray << ','
+            << m.skipped_per_ray << ',' << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ','
+            << m.render_ms.min << ',' << m.render_ms.max << ',' << o.repeat << '\n';
     };
     for (const float lambda : {4.0f, 16.0f, 64.0f, 256.0f, 1024.0f, 4096.0f}) {
         try {
             row(measure(stadium, "grid", lambda, 0, settings, o.repeat), lambda);
         } catch (const InputError&) {
-            std::cout << "| grid | " << lambda << " | the dense grid cannot hold it (over 2^25 cells) | | | | | | | | | | |\n";
+            structures.row({"grid", fixed(lambda, 0), "the dense grid cannot hold it (over 2^25 cells)"});
             // A row all the same, so that the plot's rows still alternate dense, hashed.
-            csv << "\"" << stadium.name << "\",grid," << lambda << ",refused,,,,,nan,nan,nan,nan,nan,nan,nan\n";
+            csv << "\"" << stadium.name << "\",grid," << lambda << ",refused,,,,,nan,nan,nan,nan,nan,nan,nan,,,,,\n";
         }
         row(measure(stadium, "hashed", lambda, 0, settings, o.repeat), lambda);
     }
 
-    std::cout << "\nthe table size M at lambda " << ch09::default_hashed_lambda
-              << " (the default M: the least prime at least twice the occupied cells)\n\n"
-                 "| M | load | collisions | MB | render ms |\n|---|---|---|---|---|\n";
+    // The table size M, the default (the least prime at least twice the occupied cells) among sizes
+    // around it and a power of two.
     const Measured base = measure(stadium, "hashed", ch09::default_hashed_lambda, 0, settings, 1);
     const std::uint64_t occupied = static_cast<std::uint64_t>(base.occupied);
-    for (const std::uint64_t size : {occupied / 8, occupied / 2, occupied, std::uint64_t{1} << 20, 2 * occupied, 8 * occupied}) {
+    LessonTable sizes{"09.table_size",
+                      {{"M"}, {"load"}, {"collisions"}, {"MB"}, {"render ms", true}},
+                      {},
+                      "The hashed grid at lambda " + fixed(ch09::default_hashed_lambda, 0) + " (" +
+                          grouped(occupied) + " occupied cells in a grid of " +
+                          grouped(static_cast<unsigned long long>(base.resolution.x) * base.resolution.y *
+                                  base.resolution.z) +
+                          "), " + how + "."};
+    for (const std::uint64_t size :
+         {occupied / 8, occupied / 2, occupied, std::uint64_t{1} << 20, std::uint64_t{base.M}, 2 * occupied, 8 * occupied}) {
         const auto M = static_cast<std::uint32_t>(std::max<std::uint64_t>(1, size));
         const Measured m = measure(stadium, "hashed", ch09::default_hashed_lambda, M, settings, o.repeat);
         if (m.pixels != brute.pixels)
             throw std::runtime_error("the hashed grid's image differs from brute force's: a bug of the kit");
-        std::cout << std::fixed << "| " << M << (M == (1u << 20) ? " (2^20)" : "") << " | " << std::setprecision(2)
-                  << static_cast<double>(m.occupied) / M << " | " << m.collisions << " | " << std::setprecision(1)
-                  << static_cast<double>(m.bytes) / 1e6 << " | " << m.render_ms << " |\n";
+        sizes.row({grouped(M) + (M == (1u << 20) ? " (2^20)" : M == base.M ? " (the default, prime)" : ""),
+                   fixed(static_cast<double>(m.occupied) / M, 2), grouped(static_cast<unsigned long long>(m.collisions)),
+                   fixed(static_cast<double>(m.bytes) / 1e6, 1), ms(m.render_ms)});
     }
-    std::cout << "\nwrote " << o.csv << '\n';
+    write_lesson_tables(tables_beside(o.csv), {structures, sizes}, std::cout);
+    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace

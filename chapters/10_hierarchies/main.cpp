@@ -8,6 +8,7 @@
 #include "10_hierarchies/figure.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
+#include "common/lesson_table.hpp"
 #include "common/trade.hpp"
 
 #include <algorithm>
@@ -83,7 +84,7 @@ SceneProgram scene_program(const Options& o)
 // --- The trade ---
 
 struct Measured {
-    double build_ms = 0.0, render_ms = 0.0;
+    Timing build_ms, render_ms;
     std::size_t bytes = 0;
     double tests_per_ray = 0.0, nodes_per_ray = 0.0, cells_per_ray = 0.0;
     std::vector<std::uint8_t> pixels;
@@ -106,19 +107,32 @@ Measured measure(const NffScene& nff, const StructureMaker& make, const RenderSe
     return m;
 }
 
+std::string ms(const Timing& t)
+{
+    return fixed(t.median, 1) + spread(t);
+}
+
 void sweep(const Options& o, const CommandLine& cli)
 {
     const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
     std::cerr << "measuring the BVH's leaf size, depth and split, the hierarchy of grids' leaf size and depth, then every "
                  "structure on six scenes...\n";
     std::ofstream csv(o.csv);
-    csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms\n";
+    csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms,"
+           "build_ms_min,build_ms_max,render_ms_min,render_ms_max,runs\n";
+    const auto csv_times = [&](const Measured& m) {
+        csv << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ',' << m.render_ms.max << ','
+            << o.repeat << '\n';
+    };
     const NffScene stadium = ch10::figure_scene();
     const auto objects_in = [](const NffScene& s) { return s.spheres.size() + s.triangles.size() + s.cones.size(); };
-    std::cout << "\nthe BVH on " << stadium.name << ", " << settings.width << "x" << settings.height
-              << ", 1 thread, medians of " << o.repeat << " runs\n\n"
-              << "| split | leaf size | depth limit | nodes | depth | MB | build ms | nodes/ray | tests/ray | render ms |\n"
-                 "|---|---|---|---|---|---|---|---|---|---|\n";
+    const std::string how = std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                            ", release build, 1 thread, medians of " + std::to_string(o.repeat) + " runs";
+    LessonTable bvh_table{"10.bvh",
+                          {{"split"}, {"leaf size"}, {"depth limit"}, {"nodes"}, {"depth"}, {"MB"}, {"build ms", true},
+                           {"nodes/ray"}, {"tests/ray"}, {"render ms", true}},
+                          {},
+                          "The BVH on the " + stadium.name + ", " + how + "; every image identical."};
     std::vector<std::uint8_t> reference;
     const auto bvh_row = [&](BvhSplit split, int leaf, int depth) {
         BvhSettings b;
@@ -131,13 +145,14 @@ void sweep(const Options& o, const CommandLine& cli)
             reference = m.pixels;
         if (m.pixels != reference)
             throw std::runtime_error("a BVH's image differs from another's: a bug of the kit");
-        std::cout << std::fixed << "| " << (split == BvhSplit::sah ? "SAH" : "median") << " | " << leaf << " | " << depth
-                  << " | " << m.tree.nodes << " | " << m.tree.depth << " | " << std::setprecision(2)
-                  << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1) << m.build_ms << " | "
-                  << m.nodes_per_ray << " | " << m.tests_per_ray << " | " << m.render_ms << " |\n";
+        bvh_table.row({split == BvhSplit::sah ? "SAH" : "median", std::to_string(leaf), std::to_string(depth),
+                       grouped(static_cast<unsigned long long>(m.tree.nodes)), std::to_string(m.tree.depth),
+                       fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.nodes_per_ray, 1),
+                       fixed(m.tests_per_ray, 1), ms(m.render_ms)});
         csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",bvh," << (split == BvhSplit::sah ? "sah" : "median")
-            << ":leaf" << leaf << ":depth" << depth << ',' << m.build_ms << ',' << m.bytes << ',' << m.tests_per_ray << ','
-            << m.nodes_per_ray << ",0," << m.render_ms << '\n';
+            << ":leaf" << leaf << ":depth" << depth << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.tests_per_ray
+            << ',' << m.nodes_per_ray << ",0," << m.render_ms.median;
+        csv_times(m);
     };
     for (const int leaf : {1, 2, 4, 8, 16, 32})
         bvh_row(BvhSplit::sah, leaf, 48);
@@ -146,10 +161,12 @@ void sweep(const Options& o, const CommandLine& cli)
     for (const int leaf : {4})
         bvh_row(BvhSplit::median, leaf, 48);
 
-    std::cout << "\nthe hierarchy of grids on " << stadium.name << " (lambda " << ch07::default_lambda
-              << " at every level), same settings\n\n"
-              << "| leaf size | depth limit | grids | cells | MB | build ms | cells/ray | tests/ray | render ms |\n"
-                 "|---|---|---|---|---|---|---|---|---|\n";
+    LessonTable hgrid_table{"10.hgrid",
+                            {{"leaf size"}, {"depth limit"}, {"grids"}, {"cells"}, {"MB"}, {"build ms", true},
+                             {"cells/ray"}, {"tests/ray"}, {"render ms", true}},
+                            {},
+                            "The hierarchy of grids on the " + stadium.name + " (lambda " +
+                                fixed(ch07::default_lambda, 0) + " at every level), " + how + "; every image identical to the BVH's."};
     for (const int depth : {0, 1, 2, 3})
         for (const int leaf : {4, 8, 16}) {
             if (depth == 0 && leaf != 8)
@@ -165,18 +182,21 @@ void sweep(const Options& o, const CommandLine& cli)
             }, settings, o.repeat);
             if (m.pixels != reference)
                 throw std::runtime_error("a hierarchy of grids' image differs from the BVH's: a bug of the kit");
-            std::cout << std::fixed << "| " << leaf << " | " << depth << " | " << built.grids << " | " << built.cells << " | "
-                      << std::setprecision(2) << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
-                      << m.build_ms << " | " << m.cells_per_ray << " | " << m.tests_per_ray << " | " << m.render_ms << " |\n";
+            hgrid_table.row({std::to_string(leaf), std::to_string(depth), grouped(static_cast<unsigned long long>(built.grids)),
+                             grouped(static_cast<unsigned long long>(built.cells)),
+                             fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.cells_per_ray, 1),
+                             fixed(m.tests_per_ray, 1), ms(m.render_ms)});
             csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",hgrid,leaf" << leaf << ":depth" << depth << ','
-                << m.build_ms << ',' << m.bytes << ',' << m.tests_per_ray << ",0," << m.cells_per_ray << ',' << m.render_ms
-                << '\n';
+                << m.build_ms.median << ',' << m.bytes << ',' << m.tests_per_ray << ",0," << m.cells_per_ray << ','
+                << m.render_ms.median;
+            csv_times(m);
         }
 
-    std::cout << "\nevery structure side by side, " << settings.width << "x" << settings.height
-              << ", 1 thread, medians of " << o.repeat << " runs; every image identical to the BVH's\n\n"
-              << "| scene | objects | structure | MB | build ms | tests/ray | nodes or cells/ray | render ms |\n"
-                 "|---|---|---|---|---|---|---|---|\n";
+    LessonTable all{"10.structures",
+                    {{"scene"}, {"objects"}, {"structure"}, {"MB"}, {"build ms", true}, {"tests/ray"},
+                     {"nodes or cells/ray"}, {"render ms", true}},
+                    {},
+                    "Every structure side by side, " + how + "; every image identical to the BVH's."};
     const std::vector<NffScene> scenes = {
         ch07::generated_scene(write_stadium, 5, "teapot in a stadium 5"),
         ch07::generated_scene(write_sticks, 5, "sticks 5"),
@@ -194,22 +214,24 @@ void sweep(const Options& o, const CommandLine& cli)
                 m = measure(nff, [&](const Objects& objs) { return ch10::make_accelerator(name, objs, lambda, BvhSettings{}); },
                             settings, o.repeat);
             } catch (const InputError& e) {
-                std::cout << "| " << nff.name << " | " << objects_in(nff) << " | " << name << " | " << e.what() << " |||||\n";
+                all.row({nff.name, grouped(objects_in(nff)), name, e.what()});
                 continue;
             }
             if (same.empty())
                 same = m.pixels;
             if (m.pixels != same)
                 throw std::runtime_error("the " + name + "'s image differs from the BVH's on " + nff.name + ": a bug of the kit");
-            std::cout << std::fixed << "| " << nff.name << " | " << objects_in(nff) << " | " << name << " | "
-                      << std::setprecision(2) << static_cast<double>(m.bytes) / 1e6 << " | " << std::setprecision(1)
-                      << m.build_ms << " | " << m.tests_per_ray << " | "
-                      << (name == "bvh" ? m.nodes_per_ray : m.cells_per_ray) << " | " << m.render_ms << " |\n";
-            csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << name << ",default," << m.build_ms << ',' << m.bytes
-                << ',' << m.tests_per_ray << ',' << m.nodes_per_ray << ',' << m.cells_per_ray << ',' << m.render_ms << '\n';
+            all.row({nff.name, grouped(objects_in(nff)), name, fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
+                     fixed(m.tests_per_ray, 1), fixed(name == "bvh" ? m.nodes_per_ray : m.cells_per_ray, 1),
+                     ms(m.render_ms)});
+            csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << name << ",default," << m.build_ms.median << ','
+                << m.bytes << ',' << m.tests_per_ray << ',' << m.nodes_per_ray << ',' << m.cells_per_ray << ','
+                << m.render_ms.median;
+            csv_times(m);
         }
     }
-    std::cout << "\nwrote " << o.csv << '\n';
+    write_lesson_tables(tables_beside(o.csv), {bvh_table, hgrid_table, all}, std::cout);
+    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
 }
 
 }  // namespace
@@ -227,7 +249,8 @@ int main(int argc, char** argv)
                    "what answers the queries: bvh, hgrid (the hierarchy of grids), hashed (chapter 09), grid (07) or brute");
         cli.option("--lambda", o.lambda, "with grid, hgrid or hashed: cells per object", 0.0f, 1e6f);
         cli.option("--leaf-size", o.leaf_size,
-                   "with bvh: the most objects a leaf keeps (default 4); with hgrid: the most a cell lists before it "
+                   "with bvh: a node of at most this many objects is a leaf (default 4; a larger one is too at the "
+                   "depth limit or when no split pays); with hgrid: the most a cell lists before it "
                    "gets a grid of its own (default 8)",
                    1, 65535);
         cli.option("--max-depth", o.max_depth,

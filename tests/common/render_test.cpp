@@ -76,6 +76,8 @@ TEST_CASE("rmse is zero for equal images and the channel difference for a unifor
         c = color(0.1f, 0.1f, 0.1f);
     CHECK(rmse(a, b) == Approx(0.1).epsilon(1e-6));
     int calls = 0;
-    CHECK(median_seconds(3, [&] { ++calls; }) >= 0.0);
+    const Timing t = time_runs(3, [&] { ++calls; });
     CHECK(calls == 3);
+    CHECK(t.runs == 3);
+    CHECK((0.0 <= t.min && t.min <= t.median && t.median <= t.max));
 }
