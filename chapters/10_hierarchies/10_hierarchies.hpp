@@ -41,7 +41,8 @@ struct Bvh {
     std::vector<std::uint32_t> object_index;
 };
 
-// The surface area heuristic's costs (MacDonald and Booth 1990; pbrt's 1 and 1/8 ratio): testing
+// The surface area heuristic's costs (MacDonald and Booth 1990; pbrt-v3's 1 and 1/8 ratio, where
+// pbrt-v4 takes 1 and 1/2): testing
 // an object against a ray costs 1, stepping into a node and testing its box an eighth of that.
 constexpr float sah_intersect_cost = 1.0f;
 constexpr float sah_traversal_cost = 0.125f;

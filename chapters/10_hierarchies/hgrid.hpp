@@ -139,10 +139,11 @@ private:
     }
 
     // Whether a child grid of these objects is worth building, by the cost its walk would have: a
-    // ray through a box of n_x x n_y x n_z cells crosses about (n_x + n_y + n_z) / 3 of them (a
-    // cube's mean chord is two thirds of its side, and a random direction crosses 3/2 cell faces a
-    // cell side along it), each listing references / cells objects on average. Built only when that
-    // is at most half the cell's objects, the tests a ray makes in the cell without it. Objects
+    // ray through a box of n_x x n_y x n_z cells crosses about (n_x + n_y + n_z) / 3 of them (in a
+    // cube of n cells of side s the mean chord is 2 n s / 3, and a random direction crosses 3/2 cell
+    // faces per s of length: 2 n s / 3 x 3 / (2 s) = n), each listing references / cells objects on
+    // average. Built only when that is fewer than the cell's objects, the tests a ray makes in the
+    // cell without it. Objects
     // larger than the child's cells (long sticks across it) are listed in most of them: such a grid
     // would be walked for nothing, and subdivided again, each level multiplying the references.
     // Counted from the objects' cell ranges, before anything is listed.
