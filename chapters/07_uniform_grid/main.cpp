@@ -173,13 +173,13 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
     }
 }
 
-// The next-boundary t two ways, against the exact one: boundary_t (t_first + k t_delta in double,
-// rounded once) and t_max += t_delta in float, once per step. Cells of size 1 from a random origin
+// The next-boundary t three ways, against the exact one: boundary_t (t_first + k t_delta in double,
+// rounded once), the same formula in float, and t_max += t_delta in float, once per step. Cells of size 1 from a random origin
 // in the first cell along random directions; the error is in cells, |t - t_exact| |d_x| / s.
 LessonTable measure_drift(int rays)
 {
     Rng rng(2026, 7);
-    std::vector<double> direct[2], summed[2];
+    std::vector<double> direct[2], in_float[2], summed[2];
     const int checks[2] = {10000, 100000};
     for (int r = 0; r < rays; ++r) {
         const float o = rng.next_float();
@@ -193,13 +193,19 @@ LessonTable measure_drift(int rays)
             if (k == checks[c]) {
                 const long double exact = (1.0L + k - o) / dx;
                 direct[c].push_back(static_cast<double>(std::abs(boundary_t(w, 0, k) - exact) * dx));
+                const float formula =
+                    static_cast<float>(w.t_first[0]) + static_cast<float>(k) * static_cast<float>(w.t_delta[0]);
+                in_float[c].push_back(static_cast<double>(std::abs(formula - exact) * dx));
                 summed[c].push_back(static_cast<double>(std::abs(t_max - exact) * dx));
                 ++c;
             }
         }
     }
     LessonTable table{"07.drift",
-                      {{"steps k"}, {"t_first + k t_delta (double, rounded once)"}, {"t_max += t_delta (float)"}},
+                      {{"steps k"},
+                       {"t_first + k t_delta (double, rounded once)"},
+                       {"t_first + k t_delta (float)"},
+                       {"t_max += t_delta (float)"}},
                       {},
                       "The next boundary's t after k steps, error in cells, median / max over " + std::to_string(rays) +
                           " seeded rays."};
@@ -207,6 +213,7 @@ LessonTable measure_drift(int rays)
     const auto cells = [](double v) { return v < 0.01 ? scientific(v, 2) : v >= 100.0 ? fixed(v, 0) : significant(v, 2); };
     for (int c = 0; c < 2; ++c)
         table.row({"10^" + std::to_string(c + 4), cells(median(direct[c])) + " / " + cells(worst(direct[c])),
+                   cells(median(in_float[c])) + " / " + cells(worst(in_float[c])),
                    cells(median(summed[c])) + " / " + cells(worst(summed[c]))});
     return table;
 }
