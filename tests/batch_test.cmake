@@ -129,6 +129,8 @@ endif()
 # The batch again, carol's chapter 01 the handed-out stubs once more, copied with their old file
 # times (as a submission unpacked from an archive keeps them): older than the object the edit above
 # left, so a build that trusted times would grade the solution. She must get the stubs' line again.
+# Carol alone this time, in the same folder (the others would only rebuild to the same grades).
+file(REMOVE_RECURSE "${class}/alice" "${class}/bob")
 file(REMOVE "${class}/carol/01_ray_casting.cpp")
 file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${class}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
