@@ -4,8 +4,8 @@
 # vcpkg have no pkg-config file for it), no OpenMP. Every target builds, every test passes but the
 # lessons' tables (their sweeps are minutes of work, and the test job holds them to the code).
 #
-# Catch2 v3 is built from its release source (../shared/third_party/Catch2-3.4.0.tar.gz beside the
-# kit, or RT_CATCH2_V3_SOURCE) into build/ci-libcxx/catch2-v3, with the same compiler and library.
+# Catch2 v3 is built from its release tarball (RT_CATCH2_V3_SOURCE; by default the copy the CI
+# machine keeps beside the kit) into build/ci-libcxx/catch2-v3, with the same compiler and library.
 # Debian's Catch2 v2 headers stay on the default include path: the job hides them in a private
 # mount namespace (unshare), so a stray v2 include cannot pass unnoticed.
 set -euo pipefail
