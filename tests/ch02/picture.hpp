@@ -6,10 +6,6 @@
 
 namespace rt::pictures {
 
-inline Image ch02()
-{
-    const RenderSettings s = quiet_render(96, 54, 1);
-    return ch02::render_figure(s);
-}
+inline Image ch02() { return ch02::render_figure(quiet_render(96, 54, 1)); }
 
 }  // namespace rt::pictures

@@ -6,10 +6,6 @@
 
 namespace rt::pictures {
 
-inline Image ch03()
-{
-    const RenderSettings s = quiet_render(96, 54, 1);
-    return ch03::render_figure(s);
-}
+inline Image ch03() { return ch03::render_figure(quiet_render(96, 54, 1)); }
 
 }  // namespace rt::pictures
