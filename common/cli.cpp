@@ -138,6 +138,22 @@ void add_common_options(CommandLine& cli, CommonOptions& o)
     cli.flag("--stats", o.stats, "print what the render did, one key=value per line");
 }
 
+CommandLine program_command_line(const std::string& program, const std::string& summary, CommonOptions& common)
+{
+    common.out = program + ".png";
+    CommandLine cli(program, summary);
+    add_common_options(cli, common);
+    return cli;
+}
+
+void add_sweep_options(CommandLine& cli, SweepOptions& sweep, const std::string& what, const std::string& csv_help,
+                       const std::string& repeat_help)
+{
+    cli.flag("--sweep", sweep.on, what);
+    cli.option("--repeat", sweep.repeat, repeat_help, 1, 100);
+    cli.option("--csv", sweep.csv, csv_help);
+}
+
 void check_image_size(int width, int height)
 {
     const long long pixels = static_cast<long long>(width) * height;

@@ -59,6 +59,25 @@ struct CommonOptions {
 
 void add_common_options(CommandLine& cli, CommonOptions& options);
 
+// The options of every program's --sweep: whether to run it, how many runs each measurement takes
+// (the tables give their median, and a timed cell its spread), and where its CSV goes (the lesson
+// tables go beside it, tables_beside in lesson_table.hpp).
+struct SweepOptions {
+    bool on = false;
+    int repeat = 5;
+    std::string csv;
+};
+
+// --sweep (with what it measures), --repeat and --csv; a program whose sweep times something else
+// than one run per measurement, or writes more than one table, says so in its own help.
+void add_sweep_options(CommandLine& cli, SweepOptions& sweep, const std::string& what,
+                       const std::string& csv_help = "where --sweep writes its table",
+                       const std::string& repeat_help = "runs per measurement; the tables give the median");
+
+// A chapter program's command line: its name, what it shows (the first line of --help) and the
+// common options, with its figure written to NAME.png unless --out says otherwise.
+CommandLine program_command_line(const std::string& program, const std::string& summary, CommonOptions& common);
+
 // Why 2^25 pixels (8192 x 4096): an image is 12 bytes a pixel of linear colour, and the noisy
 // chapters keep a second one for the variance: 800 MB at this size, the most a render here should
 // take of a student's machine. Larger is refused before the render (InputError naming the size).

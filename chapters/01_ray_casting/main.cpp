@@ -16,10 +16,8 @@ namespace {
 struct Options {
     CommonOptions common;
     float fov = ch01::figure_vfov_degrees;
-    bool sweep = false;
+    SweepOptions sweep{false, 3, "01_ray_casting.csv"};
     int reference_spp = 1024;
-    int repeat = 3;
-    std::string csv = "01_ray_casting.csv";
 };
 
 Image render_with(const Options& o, int spp, std::uint64_t seed)
@@ -43,17 +41,18 @@ void sweep(const Options& o)
         reset_counters();
         render_with(o, spp, o.common.seed);
         const std::uint64_t rays = total_rays(total_counts());
-        const Timing seconds = time_runs(o.repeat, [&] { image = render_with(o, spp, o.common.seed); });
+        const Timing seconds = time_runs(o.sweep.repeat, [&] { image = render_with(o, spp, o.common.seed); });
         table.rows.push_back({"spp", std::to_string(spp), seconds, rays, rmse(image, reference)});
     }
     print_trade_table(std::cout, table);
-    write_trade_csv(o.csv, table);
-    write_lesson_tables(tables_beside(o.csv),
-                        {trade_lesson_table("01.spp", table, "spp", "RMSE vs " + std::to_string(o.reference_spp) + " spp", true,
-                                            "Release build, one thread per core, median of " + std::to_string(o.repeat) +
-                                                " runs.")},
-                        std::cout);
-    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_trade_csv(o.sweep.csv, table);
+    write_lesson_tables(
+        tables_beside(o.sweep.csv),
+        {trade_lesson_table(
+            "01.spp", table, "spp", "RMSE vs " + std::to_string(o.reference_spp) + " spp", true,
+            "Release build, one thread per core, median of " + std::to_string(o.sweep.repeat) + " runs.")},
+        std::cout);
+    std::cout << "wrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -62,18 +61,15 @@ int main(int argc, char** argv)
 {
     return run_program("01_ray_casting", [&] {
         Options o;
-        o.common.out = "01_ray_casting.png";
-        CommandLine cli("01_ray_casting", "Ray casting: a ray per pixel, the nearest disc wins.");
-        add_common_options(cli, o.common);
+        CommandLine cli =
+            program_command_line("01_ray_casting", "Ray casting: a ray per pixel, the nearest disc wins.", o.common);
         cli.option("--fov", o.fov, "vertical field of view in degrees", 0.0f, 180.0f);
-        cli.flag("--sweep", o.sweep, "measure samples per pixel (1, 4, 16, 64) against time and error");
+        add_sweep_options(cli, o.sweep, "measure samples per pixel (1, 4, 16, 64) against time and error");
         cli.option("--reference-spp", o.reference_spp, "samples per pixel of the sweep's reference", 1, 65536);
-        cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             sweep(o);
             return 0;
         }

@@ -27,10 +27,8 @@ struct Options {
     CommonOptions common;
     std::string sphere = "precise";
     std::string triangle = "moller-trumbore";
-    bool sweep = false;
+    SweepOptions sweep{false, 7, "02_spheres_triangles.csv"};
     int probes = 100000;
-    int repeat = 7;
-    std::string csv = "02_spheres_triangles.csv";
     std::string scene;
 };
 
@@ -77,7 +75,8 @@ void measure(const Options& o, const std::string& group, const std::vector<std::
     for (const auto& [case_name, make] : cases) {
         const Probes probes = make();
         for (const auto& [name, test] : tests) {
-            const Timing seconds = time_runs(o.repeat, [&, &test = test] { extremes::run(probes, test, answers); });
+            const Timing seconds =
+                time_runs(o.sweep.repeat, [&, &test = test] { extremes::run(probes, test, answers); });
             rows.push_back({group, case_name, name, precision_name<T>(), seconds, extremes::tests_in(probes),
                             extremes::score(probes, answers)});
         }
@@ -183,12 +182,6 @@ std::vector<LessonTable> summary(const std::vector<Measured>& rows, const std::s
     return {errors, times};
 }
 
-std::string sibling_csv(const std::string& path, const std::string& suffix)
-{
-    const size_t dot = path.rfind(".csv");
-    return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + ".csv";
-}
-
 void sweep(const Options& o)
 {
     std::cerr << "measuring every test in float and double on the extreme cases...\n";
@@ -209,14 +202,14 @@ void sweep(const Options& o)
     print_trade_table(std::cout, wrong);
     std::cout << '\n';
     print_trade_table(std::cout, t_error);
-    std::vector<LessonTable> lesson = summary(rows, "sphere", o.repeat);
-    for (const LessonTable& t : summary(rows, "triangle", o.repeat))
+    std::vector<LessonTable> lesson = summary(rows, "sphere", o.sweep.repeat);
+    for (const LessonTable& t : summary(rows, "triangle", o.sweep.repeat))
         lesson.push_back(t);
-    write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
-    const std::string t_error_csv = sibling_csv(o.csv, "_t_error");
-    write_trade_csv(o.csv, wrong);
+    write_lesson_tables(tables_beside(o.sweep.csv), lesson, std::cout);
+    const std::string t_error_csv = csv_beside(o.sweep.csv, "_t_error");
+    write_trade_csv(o.sweep.csv, wrong);
     write_trade_csv(t_error_csv, t_error);
-    std::cout << "\nwrote " << o.csv << ", " << t_error_csv << " and " << tables_beside(o.csv) << '\n';
+    std::cout << "\nwrote " << o.sweep.csv << ", " << t_error_csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -225,22 +218,20 @@ int main(int argc, char** argv)
 {
     return run_program("02_spheres_triangles", [&] {
         Options o;
-        o.common.out = "02_spheres_triangles.png";
-        CommandLine cli("02_spheres_triangles", "Spheres and triangles: the slide's tests, precise, robust, measured.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "02_spheres_triangles", "Spheres and triangles: the slide's tests, precise, robust, measured.", o.common);
         cli.option("--sphere", o.sphere, "the sphere test of the render: slide or precise");
         cli.option("--triangle", o.triangle, "the triangle test of the render: slide, moller-trumbore or watertight");
-        cli.flag("--sweep", o.sweep, "measure every test's cost and error in float and double on the extreme cases");
+        add_sweep_options(cli, o.sweep, "measure every test's cost and error in float and double on the extreme cases",
+                          "where --sweep writes its table (the t errors go beside it, *_t_error.csv)");
         cli.option("--probes", o.probes, "rays per extreme case in the sweep", 1000, 100000000);
-        cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table (the t errors go beside it, *_t_error.csv)");
         add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const ShapeTests tests = tests_named(o);
-        check_scene_without_sweep(o.scene, o.sweep);
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        check_scene_without_sweep(o.scene, o.sweep.on);
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             sweep(o);
             return 0;
         }

@@ -25,11 +25,9 @@ struct Options {
     CommonOptions common;
     TraceSettings trace;
     std::string fresnel = "exact";
-    bool sweep = false;
+    SweepOptions sweep{false, 5, "03_reflection_refraction.csv"};
     int reference_depth = 32;
-    int repeat = 5;
     int angles = 1000001;
-    std::string csv = "03_reflection_refraction.csv";
     std::string scene;
 };
 
@@ -40,12 +38,6 @@ FresnelModel model_named(const std::string& name)
     if (name == "schlick")
         return FresnelModel::schlick;
     throw InputError("--fresnel takes exact or schlick, got '" + name + "'");
-}
-
-std::string sibling_csv(const std::string& path, const std::string& suffix)
-{
-    const size_t dot = path.rfind(".csv");
-    return dot == std::string::npos ? path + suffix : path.substr(0, dot) + suffix + ".csv";
 }
 
 std::string number(double x)
@@ -74,7 +66,7 @@ std::vector<TradeRow> measure(const Options& o, const std::vector<Trial>& trials
         rows.push_back({t.knob, t.value, {}, total_rays(total_counts()), rmse(image, reference)});
         renders.push_back([&settings, &t] { ch03::render_figure(settings, t.trace); });
     }
-    const std::vector<Timing> seconds = time_in_rounds(o.repeat, renders);
+    const std::vector<Timing> seconds = time_in_rounds(o.sweep.repeat, renders);
     for (size_t k = 0; k < rows.size(); ++k)
         rows[k].seconds = seconds[k];
     return rows;
@@ -109,13 +101,13 @@ void sweep_render(const Options& o, std::vector<LessonTable>& lesson)
     trials.push_back({"settings", "default_exact", TraceSettings{}});
     trials.push_back({"settings", "default_schlick", schlick});
 
-    std::cerr << "timing " << trials.size() << " renders, " << o.repeat << " rounds...\n";
+    std::cerr << "timing " << trials.size() << " renders, " << o.sweep.repeat << " rounds...\n";
     const std::vector<TradeRow> rows = measure(o, trials, reference);
     const std::string metric = "rmse_linear_rgb_vs_depth_" + std::to_string(o.reference_depth) + "_no_cutoff";
     const std::vector<std::pair<std::string, std::string>> tables = {
-        {"max_depth", o.csv},
-        {"min_weight", sibling_csv(o.csv, "_weight")},
-        {"settings", sibling_csv(o.csv, "_settings")}};
+        {"max_depth", o.sweep.csv},
+        {"min_weight", csv_beside(o.sweep.csv, "_weight")},
+        {"settings", csv_beside(o.sweep.csv, "_settings")}};
     for (const auto& [knob, path] : tables) {
         TradeTable table{"03_reflection_refraction", metric, {}};
         for (const TradeRow& row : rows)
@@ -133,7 +125,7 @@ void sweep_render(const Options& o, std::vector<LessonTable>& lesson)
         LessonTable t = trade_lesson_table("03." + knob, table, knob == "min_weight" ? "min_weight (at depth 32)" : knob,
                                            "RMSE", false, "");
         t.caption = "Release build, " + std::to_string(o.common.width) + "x" + std::to_string(o.common.height) +
-                    ", one sample per pixel, median of " + std::to_string(o.repeat) +
+                    ", one sample per pixel, median of " + std::to_string(o.sweep.repeat) +
                     " rounds each rendering every row once; RMSE over linear RGB against depth " +
                     std::to_string(o.reference_depth) + " with no cut-off.";
         lesson.push_back(t);
@@ -144,13 +136,14 @@ void sweep_render(const Options& o, std::vector<LessonTable>& lesson)
 // largest absolute difference from the exact reflectance) and as the lesson's summary.
 void sweep_fresnel(const Options& o, std::vector<LessonTable>& lesson)
 {
-    const std::vector<fresnel_table::Row> rows = fresnel_table::measure_all({1.333f, 1.5f, 2.4f}, o.angles, o.repeat);
+    const std::vector<fresnel_table::Row> rows =
+        fresnel_table::measure_all({1.333f, 1.5f, 2.4f}, o.angles, o.sweep.repeat);
     TradeTable table{"03_reflection_refraction", "max_abs_error_vs_exact_fresnel", {}};
     for (const fresnel_table::Row& r : rows)
         table.rows.push_back({"ior:side:formula", number(r.ior) + ":" + r.side + ":" + r.formula, r.seconds, r.calls,
                               r.max_error});
     print_trade_table(std::cout, table);
-    write_trade_csv(sibling_csv(o.csv, "_schlick"), table);
+    write_trade_csv(csv_beside(o.sweep.csv, "_schlick"), table);
 
     // The lesson's view: per index, each Schlick formula's worst error and where; then the cost of a
     // call, from the fastest to the slowest index.
@@ -175,7 +168,7 @@ void sweep_fresnel(const Options& o, std::vector<LessonTable>& lesson)
     LessonTable cost{"03.schlick_ns",
                      {{"ns per call (least to most over the three indices)"}, {"exact", true}, {"Schlick", true}},
                      {},
-                     "One pass over the angles per row, median of " + std::to_string(o.repeat) + " rounds."};
+                     "One pass over the angles per row, median of " + std::to_string(o.sweep.repeat) + " rounds."};
     for (const std::string side : {"entering", "leaving"}) {
         std::vector<std::string> cells{side};
         for (const std::string formula : {"exact", side == "entering" ? "schlick_cos_i" : "schlick_cos_t"}) {
@@ -208,27 +201,25 @@ int main(int argc, char** argv)
 {
     return run_program("03_reflection_refraction", [&] {
         Options o;
-        o.common.out = "03_reflection_refraction.png";
-        CommandLine cli("03_reflection_refraction",
-                        "Reflection and refraction: Whitted's recursion, Snell's law, Fresnel and Schlick.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "03_reflection_refraction",
+            "Reflection and refraction: Whitted's recursion, Snell's law, Fresnel and Schlick.", o.common);
         cli.option("--depth", o.trace.max_depth, "the most bounces a path may take (0: ray casting)", 0, 64);
         cli.option("--min-weight", o.trace.min_weight, "trace a secondary ray only when its weight is at least this",
                    0.0f, 1.0f);
         cli.option("--fresnel", o.fresnel, "the reflectance that splits glass's light: exact or schlick");
-        cli.flag("--sweep", o.sweep,
-                 "measure depth and weight cut-off against time and error, and Schlick against exact");
+        add_sweep_options(cli, o.sweep,
+                          "measure depth and weight cut-off against time and error, and Schlick against exact",
+                          "where --sweep writes its depth table (the others go beside it)",
+                          "timing rounds of the sweep, each running every row once; a row's time is its median");
         cli.option("--reference-depth", o.reference_depth, "depth of the sweep's reference render (no cut-off)", 16,
                    64);
-        cli.option("--repeat", o.repeat, "timing rounds of the sweep, each running every row once; a row's time is "
-                   "its median", 1, 100);
         cli.option("--angles", o.angles, "angles of incidence per row of the Fresnel table", 1001, 100000001);
-        cli.option("--csv", o.csv, "where --sweep writes its depth table (the others go beside it)");
         add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         o.trace.fresnel = model_named(o.fresnel);
-        check_scene_without_sweep(o.scene, o.sweep);
+        check_scene_without_sweep(o.scene, o.sweep.on);
         if (!o.scene.empty()) {
             const SceneRender file = load_scene_render(o.scene, o.common, cli);
             const WhittedScene scene = whitted_scene(file.scene);
@@ -238,14 +229,14 @@ int main(int argc, char** argv)
                 });
             });
         }
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             std::vector<LessonTable> lesson;
             sweep_render(o, lesson);
             sweep_fresnel(o, lesson);
-            write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
-            std::cout << "\nwrote " << o.csv << ", its _weight, _settings and _schlick siblings, and "
-                      << tables_beside(o.csv) << '\n';
+            write_lesson_tables(tables_beside(o.sweep.csv), lesson, std::cout);
+            std::cout << "\nwrote " << o.sweep.csv << ", its _weight, _settings and _schlick siblings, and "
+                      << tables_beside(o.sweep.csv) << '\n';
             return 0;
         }
         return write_figure(o.common, [&] { return ch03::render_figure(render_settings(o.common), o.trace); });

@@ -28,10 +28,8 @@ struct Options {
     std::string offset = "robust";
     std::string feelers = "any-hit";
     float scale = 1.0f;
-    bool sweep = false;
+    SweepOptions sweep{false, 7, "04_shadow_feelers.csv"};
     int probes = 100000;
-    int repeat = 7;
-    std::string csv = "04_shadow_feelers.csv";
     std::string scene;
     bool classic = false;
     bool two_sided = false;
@@ -181,7 +179,7 @@ LessonTable measure_feeler_cost(const Options& o, TradeTable& table)
         counts.push_back(total_counts());
     }
     std::vector<std::vector<double>> runs(queries.size());
-    for (int round = 0; round < o.repeat; ++round)
+    for (int round = 0; round < o.sweep.repeat; ++round)
         for (size_t q = 0; q < queries.size(); ++q) {
             const Timer timer;
             ch04::render_figure(settings, {Offset::robust, queries[q].second});
@@ -194,11 +192,12 @@ LessonTable measure_feeler_cost(const Options& o, TradeTable& table)
     };
     LessonTable lesson{"04.cost",
                        {{"feelers"}, {"seconds", true}, {"rays"}, {"rays/second", true}, {"shadow rays"},
-                        {"tests per shadow ray"}, {"seconds in feelers", true}, {"vs any-hit", true}, {"RMSE vs any-hit"}},
+                        {"tests per shadow ray"}, {"seconds in feelers", true}, {"vs any-hit", true},
+                        {"RMSE vs any-hit"}},
                        {},
-                       "The figure at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", " +
-                           std::to_string(settings.spp) + " spp, release build, median of " + std::to_string(o.repeat) +
-                           " interleaved runs."};
+                       "The figure at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                           ", " + std::to_string(settings.spp) + " spp, release build, median of " +
+                           std::to_string(o.sweep.repeat) + " interleaved runs."};
     for (size_t q = 0; q < queries.size(); ++q) {
         const Timing timing = timing_of(runs[q]);
         const double seconds = timing.median;
@@ -283,12 +282,13 @@ void sweep(const Options& o)
     measure_offsets(o, rehits, missed, lesson);
     lesson.push_back(measure_feeler_cost(o, cost));
     lesson.push_back(feeler_tests_by_outcome(o));
-    const std::string missed_csv = csv_beside(o.csv, "_missed"), cost_csv = csv_beside(o.csv, "_cost");
-    write_trade_csv(o.csv, rehits);
+    const std::string missed_csv = csv_beside(o.sweep.csv, "_missed"), cost_csv = csv_beside(o.sweep.csv, "_cost");
+    write_trade_csv(o.sweep.csv, rehits);
     write_trade_csv(missed_csv, missed);
     write_trade_csv(cost_csv, cost);
-    write_lesson_tables(tables_beside(o.csv), lesson, std::cout);
-    std::cout << "\nwrote " << o.csv << ", " << missed_csv << ", " << cost_csv << " and " << tables_beside(o.csv) << '\n';
+    write_lesson_tables(tables_beside(o.sweep.csv), lesson, std::cout);
+    std::cout << "\nwrote " << o.sweep.csv << ", " << missed_csv << ", " << cost_csv << " and "
+              << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -297,25 +297,24 @@ int main(int argc, char** argv)
 {
     return run_program("04_shadow_feelers", [&] {
         Options o;
-        o.common.out = "04_shadow_feelers.png";
-        CommandLine cli("04_shadow_feelers", "Shadow feelers: local shading, point lights, hard shadows, no acne.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "04_shadow_feelers", "Shadow feelers: local shading, point lights, hard shadows, no acne.", o.common);
         cli.option("--offset", o.offset, "how feelers leave the surface: none, t-min, normal or robust");
         cli.option("--feelers", o.feelers, "the shadow query: any-hit, closest-hit or off (no shadows)");
         // Below 1e-7 the camera's squared lengths (1e-60 at S = 1e-30) underflow float; the kit's
         // tables measure 1e-4 to 1e6.
         cli.option("--scale", o.scale, "multiply every length of the scene and camera by this", 1e-7f, 1e7f);
-        cli.flag("--sweep", o.sweep, "measure self-intersection by scale and offset, and what feelers cost");
+        add_sweep_options(cli, o.sweep, "measure self-intersection by scale and offset, and what feelers cost",
+                          "where --sweep writes its tables (*_missed.csv and *_cost.csv beside it)",
+                          "renders per feeler-cost row; the table gives the median");
         cli.option("--probes", o.probes, "feelers per scale and offset in the sweep", 1000, 100000000);
-        cli.option("--repeat", o.repeat, "renders per feeler-cost row; the table gives the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its tables (*_missed.csv and *_cost.csv beside it)");
         add_scene_option(cli, o.scene);
         cli.flag("--classic", o.classic, "with --scene: the classic NFF test rules (corner rays, depth 5, SPD counts)");
         cli.flag("--two-sided", o.two_sided, "with --classic: every polygon seen from both sides (SPD's teapot)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const FeelerSettings feelers = feelers_named(o);
-        check_scene_without_sweep(o.scene, o.sweep);
+        check_scene_without_sweep(o.scene, o.sweep.on);
         classic::check_classic_options(o.classic, o.scene, o.common.spp, o.two_sided);
         if (o.classic && (cli.given("--offset") || cli.given("--feelers")))
             throw InputError("--classic sends NFF's feelers, any-hit from the robust offset: --offset and --feelers "
@@ -336,8 +335,8 @@ int main(int argc, char** argv)
                 });
             });
         }
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             sweep(o);
             return 0;
         }

@@ -26,12 +26,10 @@ struct Options {
     CommonOptions common;
     int light_samples = 16;
     std::string sampling = "stratified";
-    bool sweep = false;
+    SweepOptions sweep{false, 5, "05_soft_shadows.csv"};
     int sweep_width = 160;
     int sweep_height = 120;
     int reference_samples = 4096;
-    int repeat = 5;
-    std::string csv = "05_soft_shadows.csv";
     std::string scene;
     float light_size = nff_light_size;
 };
@@ -92,11 +90,11 @@ void sweep(const Options& o)
         images.push_back(ch05::render_panel(settings, scene, t.sampling));
         rays.push_back(total_rays(total_counts()));
     }
-    std::cerr << "timing " << trials.size() << " rows, " << o.repeat << " rounds...\n";
+    std::cerr << "timing " << trials.size() << " rows, " << o.sweep.repeat << " rounds...\n";
     std::vector<std::function<void()>> renders;
     for (const Trial& t : trials)
         renders.push_back([&settings, &scene, sampling = t.sampling] { ch05::render_panel(settings, scene, sampling); });
-    const std::vector<Timing> times = time_in_rounds(o.repeat, renders);
+    const std::vector<Timing> times = time_in_rounds(o.sweep.repeat, renders);
 
     TradeTable table{"05_soft_shadows",
                      "rmse_linear_rgb_vs_" + std::to_string(o.reference_samples) + "_stratified_samples_per_light", {}};
@@ -106,7 +104,7 @@ void sweep(const Options& o)
                        {},
                        "The soft panel at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                            ", one sample per pixel (its centre), release build, one thread per core, median of " +
-                           std::to_string(o.repeat) + " interleaved runs; RMSE over linear RGB against " +
+                           std::to_string(o.sweep.repeat) + " interleaved runs; RMSE over linear RGB against " +
                            std::to_string(o.reference_samples) + " stratified samples per light."};
     for (size_t k = 0; k < trials.size(); ++k) {
         const Trial& t = trials[k];
@@ -122,15 +120,15 @@ void sweep(const Options& o)
         table.rows.push_back({"scheme:samples_per_light", t.name + ":" + std::to_string(t.sampling.samples), seconds,
                               rays[k], error});
     }
-    write_lesson_tables(tables_beside(o.csv), {lesson}, std::cout);
+    write_lesson_tables(tables_beside(o.sweep.csv), {lesson}, std::cout);
     // Random rows from most samples to fewest, then stratified from fewest to most: the plot's
     // line (common/trade_plot.gnuplot joins the rows in order) runs down one scheme and up the
     // other, through the 1-sample point they share, instead of jumping back across the plot.
     std::reverse(table.rows.begin(), table.rows.begin() + static_cast<long>(trials.size() / 2));
     std::cout << '\n';
     print_trade_table(std::cout, table);
-    write_trade_csv(o.csv, table);
-    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_trade_csv(o.sweep.csv, table);
+    std::cout << "wrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -139,30 +137,28 @@ int main(int argc, char** argv)
 {
     return run_program("05_soft_shadows", [&] {
         Options o;
-        o.common.out = "05_soft_shadows.png";
+        CommandLine cli = program_command_line(
+            "05_soft_shadows",
+            "Soft shadows: area lights sampled with many shadow feelers, beside the hard shadow of a point.", o.common);
         // Two panels of 400 x 320 side by side.
         o.common.width = 800;
         o.common.height = 320;
-        CommandLine cli("05_soft_shadows",
-                        "Soft shadows: area lights sampled with many shadow feelers, beside the hard shadow of a point.");
-        add_common_options(cli, o.common);
         cli.option("--light-samples", o.light_samples, "points (shadow feelers) per area light per shading point", 1,
                    65536);
         cli.option("--sampling", o.sampling, "how the points are picked: random or stratified (a square number)");
-        cli.flag("--sweep", o.sweep, "measure samples per light (1 to 256), random against stratified, against error");
+        add_sweep_options(cli, o.sweep,
+                          "measure samples per light (1 to 256), random against stratified, against error");
         cli.option("--sweep-width", o.sweep_width, "the sweep's image width (the soft panel alone)", 1, 16384);
         cli.option("--sweep-height", o.sweep_height, "the sweep's image height", 1, 16384);
         cli.option("--reference-samples", o.reference_samples,
                    "stratified samples per light of the sweep's reference (a square)", 1, 1048576);
-        cli.option("--repeat", o.repeat, "renders per sweep row; the table gives the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
         add_scene_option(cli, o.scene);
         cli.option("--light-size", o.light_size,
                    "with --scene: each light's disc radius, as a fraction of its distance to the view's 'at'", 0.0f, 10.0f);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         const LightSampling sampling = sampling_of(o);
-        check_scene_without_sweep(o.scene, o.sweep);
+        check_scene_without_sweep(o.scene, o.sweep.on);
         if (o.scene.empty() && cli.given("--light-size"))
             throw InputError("--light-size sizes a scene file's lights: it needs --scene FILE.nff");
         if (!o.scene.empty()) {
@@ -175,8 +171,8 @@ int main(int argc, char** argv)
                 });
             });
         }
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             if (grid_side(o.reference_samples) == 0)
                 throw InputError("--reference-samples must be a square (1, 4, 9, 16, ...), got " +
                                  std::to_string(o.reference_samples));

@@ -23,10 +23,8 @@ struct Options {
     CommonOptions common;
     float aperture = ch06::figure_aperture_radius;
     float focus = ch06::figure_lens().focus_distance;
-    bool sweep = false;
+    SweepOptions sweep{false, 3, "06_depth_of_field.csv"};
     int reference_spp = 1024;
-    int repeat = 3;
-    std::string csv = "06_depth_of_field.csv";
     std::string scene;
 };
 
@@ -65,7 +63,7 @@ void sweep(const Options& o)
         images[k] = render_with(o, counts[k], o.common.seed);
         rays[k] = total_rays(total_counts());
     }
-    for (int run = 0; run < o.repeat; ++run)
+    for (int run = 0; run < o.sweep.repeat; ++run)
         for (size_t k = 0; k < counts.size(); ++k) {
             const Timer timer;
             render_with(o, counts[k], o.common.seed);
@@ -76,14 +74,16 @@ void sweep(const Options& o)
         table.rows.push_back({"lens_samples", std::to_string(counts[k]), timing_of(seconds[k]), rays[k],
                               rmse(images[k], reference)});
     print_trade_table(std::cout, table);
-    write_trade_csv(o.csv, table);
-    write_lesson_tables(tables_beside(o.csv),
-                        {trade_lesson_table("06.lens_samples", table, "lens samples per pixel",
-                                            "RMSE vs " + std::to_string(o.reference_spp) + " spp", true,
-                                            "Release build, one thread per core, median of " + std::to_string(o.repeat) +
-                                                " interleaved runs; rays counts the camera rays and the shadow feelers of one render.")},
-                        std::cout);
-    std::cout << "wrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_trade_csv(o.sweep.csv, table);
+    write_lesson_tables(
+        tables_beside(o.sweep.csv),
+        {trade_lesson_table(
+            "06.lens_samples", table, "lens samples per pixel", "RMSE vs " + std::to_string(o.reference_spp) + " spp",
+            true,
+            "Release build, one thread per core, median of " + std::to_string(o.sweep.repeat) +
+                " interleaved runs; rays counts the camera rays and the shadow feelers of one render.")},
+        std::cout);
+    std::cout << "wrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 // How far each sphere lies and how widely the lens blurs it: what the figure should show.
@@ -104,21 +104,18 @@ int main(int argc, char** argv)
 {
     return run_program("06_depth_of_field", [&] {
         Options o;
-        o.common.out = "06_depth_of_field.png";
-        CommandLine cli("06_depth_of_field", "Depth of field: a thin lens, one plane in sharp focus, the rest blurred.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "06_depth_of_field", "Depth of field: a thin lens, one plane in sharp focus, the rest blurred.", o.common);
         const float most = std::numeric_limits<float>::max();
         cli.option("--aperture", o.aperture, "the lens's radius in scene units (0: a pinhole, all sharp)", -most, most);
         cli.option("--focus", o.focus, "the distance of the plane of sharp focus in front of the eye", -most, most);
-        cli.flag("--sweep", o.sweep, "measure lens samples per pixel (1, 4, 16, 64, 256) against time and error");
+        add_sweep_options(cli, o.sweep, "measure lens samples per pixel (1, 4, 16, 64, 256) against time and error");
         cli.option("--reference-spp", o.reference_spp, "samples per pixel of the sweep's reference", 1, 65536);
-        cli.option("--repeat", o.repeat, "runs per sweep row; the table gives the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
         add_scene_option(cli, o.scene);
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         lens_of(o);  // a bad lens is bad input, before any work
-        check_scene_without_sweep(o.scene, o.sweep);
+        check_scene_without_sweep(o.scene, o.sweep.on);
         if (!o.scene.empty()) {
             // Focused on the view's `at` with the figure's ratio of aperture to focus, unless the
             // command line says otherwise.
@@ -137,8 +134,8 @@ int main(int argc, char** argv)
                 });
             });
         }
-        if (o.sweep) {
-            check_writable(o.csv, "CSV");
+        if (o.sweep.on) {
+            check_writable(o.sweep.csv, "CSV");
             sweep(o);
             return 0;
         }

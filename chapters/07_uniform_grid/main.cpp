@@ -28,9 +28,7 @@ struct Options {
     SceneOptions scene;
     std::string accel = "grid";
     float lambda = ch07::default_lambda;
-    bool sweep = false;
-    int repeat = 5;
-    std::string csv = "07_uniform_grid.csv";
+    SweepOptions sweep{false, 5, "07_uniform_grid.csv"};
 };
 
 // The --stats lines of the structure, after the render's own.
@@ -123,17 +121,18 @@ std::string settings_text(const RenderSettings& settings)
 LessonTable sweep_lambda(const Options& o, const RenderSettings& settings)
 {
     const NffScene nff = ch07::figure_scene();
-    std::ofstream csv = open_csv(o.csv, "scene,objects,lambda,resolution,cells,empty_cells_percent,references_per_object,"
-                                        "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms,build_ms_min,build_ms_max,"
-                                        "render_ms_min,render_ms_max,runs");
+    std::ofstream csv = open_csv(o.sweep.csv,
+                                 "scene,objects,lambda,resolution,cells,empty_cells_percent,references_per_object,"
+                                 "bytes,build_ms,tests_per_ray,cells_per_ray,render_ms,build_ms_min,build_ms_max,"
+                                 "render_ms_min,render_ms_max,runs");
     LessonTable table{"07.lambda",
                       {{"lambda"}, {"resolution"}, {"empty cells"}, {"refs/object"}, {"MB"}, {"build ms", true},
                        {"tests/ray"}, {"cells/ray"}, {"render ms", true}},
                       {},
                       "The " + nff.name + ", " + settings_text(settings) + ", release build, medians of " +
-                          std::to_string(o.repeat) + " runs."};
+                          std::to_string(o.sweep.repeat) + " runs."};
     for (const float lambda : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 16.0f, 32.0f}) {
-        const Measured m = measure(nff, "grid", lambda, settings, o.repeat);
+        const Measured m = measure(nff, "grid", lambda, settings, o.sweep.repeat);
         std::ostringstream res;
         res << m.grid.resolution.x << 'x' << m.grid.resolution.y << 'x' << m.grid.resolution.z;
         const double empty = 100.0 * static_cast<double>(m.grid.empty_cells) / static_cast<double>(m.grid.cells);
@@ -155,9 +154,9 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
                 LessonTable& table)
 {
     // Brute force on the largest scenes takes minutes a render: one run there, said in the caption.
-    const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.repeat;
+    const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.sweep.repeat;
     const Measured brute = measure(nff, "brute", o.lambda, settings, brute_runs);
-    const Measured grid = measure(nff, "grid", o.lambda, settings, o.repeat);
+    const Measured grid = measure(nff, "grid", o.lambda, settings, o.sweep.repeat);
     if (brute.pixels != grid.pixels || brute.rays != grid.rays)
         throw std::runtime_error("the grid's image or ray count differs from brute force's on " + nff.name +
                                  ": a bug of the kit");
@@ -202,9 +201,7 @@ LessonTable measure_drift(int rays)
         }
     }
     LessonTable table{"07.drift",
-                      {{"steps k"},
-                       {"t_first + k t_delta (double, rounded once)"},
-                       {"t_first + k t_delta (float)"},
+                      {{"steps k"}, {"t_first + k t_delta (double, rounded once)"}, {"t_first + k t_delta (float)"},
                        {"t_max += t_delta (float)"}},
                       {},
                       "The next boundary's t after k steps, error in cells, median / max over " + std::to_string(rays) +
@@ -235,23 +232,24 @@ void sweep(const Options& o, const CommandLine& cli)
 {
     const RenderSettings settings = sweep_settings(o.common, cli, 64, 36);
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
-    std::ofstream n_csv = open_csv(csv_beside(o.csv, "_n"), comparison_header);
+    std::ofstream n_csv = open_csv(csv_beside(o.sweep.csv, "_n"), comparison_header);
     std::ostringstream what;
     what << "Brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
-    LessonTable growth = comparison_table("07.growth", what.str(), settings, o.repeat);
+    LessonTable growth = comparison_table("07.growth", what.str(), settings, o.sweep.repeat);
     for (int depth = 1; depth <= 8; ++depth)
         compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
                    growth);
-    std::ofstream scenes_csv = open_csv(csv_beside(o.csv, "_scenes"), comparison_header);
-    LessonTable scenes = comparison_table("07.scenes", "The kit's generated scenes near 10k objects", settings, o.repeat);
+    std::ofstream scenes_csv = open_csv(csv_beside(o.sweep.csv, "_scenes"), comparison_header);
+    LessonTable scenes =
+        comparison_table("07.scenes", "The kit's generated scenes near 10k objects", settings, o.sweep.repeat);
     compare_on(ch07::generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv, scenes);
     compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv, scenes);
     compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv, scenes);
     compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv, scenes);
     const LessonTable lambda = sweep_lambda(o, sweep_settings(o.common, cli, 320, 180));
-    write_lesson_tables(tables_beside(o.csv), {growth, scenes, lambda, measure_drift(1000)}, std::cout);
-    std::cout << "\nwrote " << o.csv << ", " << csv_beside(o.csv, "_n") << ", " << csv_beside(o.csv, "_scenes")
-              << " and " << tables_beside(o.csv) << '\n';
+    write_lesson_tables(tables_beside(o.sweep.csv), {growth, scenes, lambda, measure_drift(1000)}, std::cout);
+    std::cout << "\nwrote " << o.sweep.csv << ", " << csv_beside(o.sweep.csv, "_n") << ", "
+              << csv_beside(o.sweep.csv, "_scenes") << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -260,22 +258,21 @@ int main(int argc, char** argv)
 {
     return run_program("07_uniform_grid", [&] {
         Options o;
-        o.common.out = "07_uniform_grid.png";
-        CommandLine cli("07_uniform_grid", "The uniform grid: a scene's rays walk its cells, testing only the objects there.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "07_uniform_grid", "The uniform grid: a scene's rays walk its cells, testing only the objects there.",
+            o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
         cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
-        cli.flag("--sweep", o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade");
-        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
+        add_sweep_options(cli, o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade",
+                          "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         if (o.accel != "grid" && o.accel != "brute")
             throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
         if (o.accel == "brute" && cli.given("--lambda"))
             throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

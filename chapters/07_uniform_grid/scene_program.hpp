@@ -206,15 +206,15 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
 }
 
 // What a scene program does once its own options are checked: checks the shared ones, then runs
-// its sweep (--sweep, writing `csv`) or renders.
+// its sweep (--sweep, writing sweep.csv) or renders.
 inline int finish_scene_program(const SceneProgram& program, const CommonOptions& common, const SceneOptions& o,
-                                const CommandLine& cli, bool sweep, const std::string& csv,
+                                const CommandLine& cli, const SweepOptions& sweep,
                                 const std::function<void()>& run_sweep)
 {
-    check_scene_without_sweep(o.scene, sweep);
+    check_scene_without_sweep(o.scene, sweep.on);
     check_scene_program_options(program, o, common);
-    if (sweep) {
-        check_writable(csv, "CSV");
+    if (sweep.on) {
+        check_writable(sweep.csv, "CSV");
         // Each row as it is measured, in a log too: a sweep takes minutes.
         std::cout << std::unitbuf;
         run_sweep();

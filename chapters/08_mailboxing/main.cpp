@@ -28,9 +28,7 @@ struct Options {
     std::string accel = "grid";
     std::string mailbox = "on";
     float lambda = ch07::default_lambda;
-    bool sweep = false;
-    int repeat = 9;
-    std::string csv = "08_mailboxing.csv";
+    SweepOptions sweep{false, 9, "08_mailboxing.csv"};
 };
 
 void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
@@ -174,7 +172,7 @@ void sweep(const Options& o, const CommandLine& cli)
 {
     const RenderSettings settings = sweep_settings(o.common, cli, 320, 180);
     std::cerr << "measuring what the mailboxes save, by density and ray kind, on three scenes...\n";
-    std::ofstream csv(o.csv);
+    std::ofstream csv(o.sweep.csv);
     csv << "scene,objects,lambda,references_per_object,kind,count,tests_per_ray_grid,tests_per_ray_mailboxes,"
            "tests_saved_percent,ms_grid,ms_mailboxes,time_saved_percent,ms_grid_min,ms_grid_max,ms_mailboxes_min,"
            "ms_mailboxes_max,runs\n";
@@ -185,7 +183,7 @@ void sweep(const Options& o, const CommandLine& cli)
                       "The grid with and without mailboxes on the same rays (" + std::to_string(settings.width) + "x" +
                           std::to_string(settings.height) +
                           " primary rays, their shadow feelers and mirror rays), release build, 1 thread, medians of " +
-                          std::to_string(o.repeat) + " interleaved runs; the answers of every ray identical."};
+                          std::to_string(o.sweep.repeat) + " interleaved runs; the answers of every ray identical."};
     const std::vector<NffScene> scenes = {ch08::figure_scene(),
                                           ch07::generated_scene(write_mountain, 7, "mountain, depth 7"),
                                           ch07::generated_scene(write_sphereflake, 4, "sphereflake, depth 4")};
@@ -201,7 +199,7 @@ void sweep(const Options& o, const CommandLine& cli)
             const MailboxGrid mailboxed(objects, lambda);
             const double refs = static_cast<double>(grid.stats().references) / objects.size();
             for (const RaySet& set : sets) {
-                const auto [a, b] = compare(grid, mailboxed, set, objects, o.repeat);
+                const auto [a, b] = compare(grid, mailboxed, set, objects, o.sweep.repeat);
                 if (!same_answers(a, b))
                     throw std::runtime_error("the grid with mailboxes answered differently on " + nff.name + ": a bug of the kit");
                 const double n = static_cast<double>(std::max<size_t>(1, set.rays.size()));
@@ -218,8 +216,8 @@ void sweep(const Options& o, const CommandLine& cli)
             }
         }
     }
-    write_lesson_tables(tables_beside(o.csv), {table}, std::cout);
-    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_lesson_tables(tables_beside(o.sweep.csv), {table}, std::cout);
+    std::cout << "\nwrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -228,17 +226,14 @@ int main(int argc, char** argv)
 {
     return run_program("08_mailboxing", [&] {
         Options o;
-        o.common.out = "08_mailboxing.png";
-        CommandLine cli("08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.", o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
         cli.option("--mailbox", o.mailbox, "with the grid: on (a mailbox per object and thread) or off");
         cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
-        cli.flag("--sweep", o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
-        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
+        add_sweep_options(cli, o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         if (o.accel != "grid" && o.accel != "brute")
@@ -247,6 +242,6 @@ int main(int argc, char** argv)
             throw InputError("--mailbox takes on or off, got '" + o.mailbox + "'");
         if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--mailbox")))
             throw InputError("--lambda and --mailbox set up the grid; they do not apply to --accel brute");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

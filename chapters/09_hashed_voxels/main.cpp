@@ -26,9 +26,7 @@ struct Options {
     std::string accel = "hashed";
     float lambda = ch09::default_hashed_lambda;
     int table_size = 0;
-    bool sweep = false;
-    int repeat = 5;
-    std::string csv = "09_hashed_voxels.csv";
+    SweepOptions sweep{false, 5, "09_hashed_voxels.csv"};
 };
 
 void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
@@ -137,12 +135,12 @@ void sweep(const Options& o, const CommandLine& cli)
     std::cerr << "measuring the hashed grid against the dense one, then the table size (a few minutes)...\n";
     const NffScene stadium = ch09::figure_scene();
     const Measured brute = measure(stadium, "brute", 1.0f, 0, settings, 1);
-    std::ofstream csv(o.csv);
+    std::ofstream csv(o.sweep.csv);
     csv << "scene,structure,lambda,resolution,occupied_cells,references,table_size,collisions,bytes,build_ms,"
            "tests_per_ray,cells_per_ray,lookups_per_ray,skipped_per_ray,render_ms,build_ms_min,build_ms_max,"
            "render_ms_min,render_ms_max,runs\n";
     const std::string how = std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                            ", release build, 1 thread, medians of " + std::to_string(o.repeat) + " runs";
+                            ", release build, 1 thread, medians of " + std::to_string(o.sweep.repeat) + " runs";
     LessonTable structures{
         "09.structures",
         {{"structure"}, {"lambda"}, {"resolution"}, {"cells"}, {"occupied"}, {"MB"}, {"bytes/reference"},
@@ -164,17 +162,17 @@ void sweep(const Options& o, const CommandLine& cli)
             << m.occupied << ',' << m.references << ',' << m.M << ',' << m.collisions << ',' << m.bytes << ','
             << m.build_ms.median << ',' << m.tests_per_ray << ',' << m.cells_per_ray << ',' << m.lookups_per_ray << ','
             << m.skipped_per_ray << ',' << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ','
-            << m.render_ms.min << ',' << m.render_ms.max << ',' << o.repeat << '\n';
+            << m.render_ms.min << ',' << m.render_ms.max << ',' << o.sweep.repeat << '\n';
     };
     for (const float lambda : {4.0f, 16.0f, 64.0f, 256.0f, 1024.0f, 4096.0f}) {
         try {
-            row(measure(stadium, "grid", lambda, 0, settings, o.repeat), lambda);
+            row(measure(stadium, "grid", lambda, 0, settings, o.sweep.repeat), lambda);
         } catch (const InputError&) {
             structures.row({"grid", fixed(lambda, 0), "the dense grid cannot hold it (over 2^25 cells)"});
             // A row all the same, so that the plot's rows still alternate dense, hashed.
             csv << "\"" << stadium.name << "\",grid," << lambda << ",refused,,,,,nan,nan,nan,nan,nan,nan,nan,,,,,\n";
         }
-        row(measure(stadium, "hashed", lambda, 0, settings, o.repeat), lambda);
+        row(measure(stadium, "hashed", lambda, 0, settings, o.sweep.repeat), lambda);
     }
 
     // The table size M, the default (the least prime at least twice the occupied cells) among sizes
@@ -192,15 +190,15 @@ void sweep(const Options& o, const CommandLine& cli)
     for (const std::uint64_t size :
          {occupied / 8, occupied / 2, occupied, std::uint64_t{1} << 20, std::uint64_t{base.M}, 2 * occupied, 8 * occupied}) {
         const auto M = static_cast<std::uint32_t>(std::max<std::uint64_t>(1, size));
-        const Measured m = measure(stadium, "hashed", ch09::default_hashed_lambda, M, settings, o.repeat);
+        const Measured m = measure(stadium, "hashed", ch09::default_hashed_lambda, M, settings, o.sweep.repeat);
         if (m.pixels != brute.pixels)
             throw std::runtime_error("the hashed grid's image differs from brute force's: a bug of the kit");
         sizes.row({grouped(M) + (M == (1u << 20) ? " (2^20)" : M == base.M ? " (the default, prime)" : ""),
                    fixed(static_cast<double>(m.occupied) / M, 2), grouped(static_cast<unsigned long long>(m.collisions)),
                    fixed(static_cast<double>(m.bytes) / 1e6, 1), ms(m.render_ms)});
     }
-    write_lesson_tables(tables_beside(o.csv), {structures, sizes}, std::cout);
-    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_lesson_tables(tables_beside(o.sweep.csv), {structures, sizes}, std::cout);
+    std::cout << "\nwrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -209,9 +207,9 @@ int main(int argc, char** argv)
 {
     return run_program("09_hashed_voxels", [&] {
         Options o;
-        o.common.out = "09_hashed_voxels.png";
-        CommandLine cli("09_hashed_voxels", "Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "09_hashed_voxels", "Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.",
+            o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel, "what answers the queries: hashed, grid (dense, chapter 07) or brute");
@@ -219,9 +217,7 @@ int main(int argc, char** argv)
                    0.0f, 1e6f);
         cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
                    "occupied cells)", 0, 1 << 30);
-        cli.flag("--sweep", o.sweep, "measure the hashed grid against the dense one, and the table size");
-        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
+        add_sweep_options(cli, o.sweep, "measure the hashed grid against the dense one, and the table size");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         if (o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
@@ -232,6 +228,6 @@ int main(int argc, char** argv)
             throw InputError("--lambda and --table-size set up a grid; they do not apply to --accel brute");
         if (o.accel != "hashed" && cli.given("--table-size"))
             throw InputError("--table-size sizes the hashed grid's table; it applies to --accel hashed only");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

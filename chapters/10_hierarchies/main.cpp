@@ -30,9 +30,7 @@ struct Options {
     HGridSettings hgrid;
     int leaf_size = 0, max_depth = -1;  // given: for the BVH or the hierarchy of grids, whichever --accel names
     std::string split = "sah";
-    bool sweep = false;
-    int repeat = 5;
-    std::string csv = "10_hierarchies.csv";
+    SweepOptions sweep{false, 5, "10_hierarchies.csv"};
 };
 
 void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
@@ -117,17 +115,17 @@ void sweep(const Options& o, const CommandLine& cli)
     const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
     std::cerr << "measuring the BVH's leaf size, depth and split, the hierarchy of grids' leaf size and depth, then every "
                  "structure on six scenes...\n";
-    std::ofstream csv(o.csv);
+    std::ofstream csv(o.sweep.csv);
     csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms,"
            "build_ms_min,build_ms_max,render_ms_min,render_ms_max,runs\n";
     const auto csv_times = [&](const Measured& m) {
         csv << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ',' << m.render_ms.max << ','
-            << o.repeat << '\n';
+            << o.sweep.repeat << '\n';
     };
     const NffScene stadium = ch10::figure_scene();
     const auto objects_in = [](const NffScene& s) { return s.spheres.size() + s.triangles.size() + s.cones.size(); };
     const std::string how = std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                            ", release build, 1 thread, medians of " + std::to_string(o.repeat) + " runs";
+                            ", release build, 1 thread, medians of " + std::to_string(o.sweep.repeat) + " runs";
     LessonTable bvh_table{"10.bvh",
                           {{"split"}, {"leaf size"}, {"depth limit"}, {"nodes"}, {"depth"}, {"MB"}, {"build ms", true},
                            {"nodes/ray"}, {"tests/ray"}, {"render ms", true}},
@@ -140,7 +138,7 @@ void sweep(const Options& o, const CommandLine& cli)
         b.leaf_size = leaf;
         b.max_depth = depth;
         const Measured m = measure(stadium, [&](const Objects& objs) { return std::make_unique<BvhAccel>(objs, b); },
-                                   settings, o.repeat);
+                                   settings, o.sweep.repeat);
         if (reference.empty())
             reference = m.pixels;
         if (m.pixels != reference)
@@ -179,7 +177,7 @@ void sweep(const Options& o, const CommandLine& cli)
                 auto accel = std::make_unique<HGridAccel>(objs, h);
                 built = accel->stats();
                 return accel;
-            }, settings, o.repeat);
+            }, settings, o.sweep.repeat);
             if (m.pixels != reference)
                 throw std::runtime_error("a hierarchy of grids' image differs from the BVH's: a bug of the kit");
             hgrid_table.row({std::to_string(leaf), std::to_string(depth), grouped(static_cast<unsigned long long>(built.grids)),
@@ -212,7 +210,7 @@ void sweep(const Options& o, const CommandLine& cli)
             Measured m;
             try {
                 m = measure(nff, [&](const Objects& objs) { return ch10::make_accelerator(name, objs, lambda, BvhSettings{}); },
-                            settings, o.repeat);
+                            settings, o.sweep.repeat);
             } catch (const InputError& e) {
                 all.row({nff.name, grouped(objects_in(nff)), name, e.what()});
                 continue;
@@ -230,8 +228,8 @@ void sweep(const Options& o, const CommandLine& cli)
             csv_times(m);
         }
     }
-    write_lesson_tables(tables_beside(o.csv), {bvh_table, hgrid_table, all}, std::cout);
-    std::cout << "\nwrote " << o.csv << " and " << tables_beside(o.csv) << '\n';
+    write_lesson_tables(tables_beside(o.sweep.csv), {bvh_table, hgrid_table, all}, std::cout);
+    std::cout << "\nwrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 
 }  // namespace
@@ -240,9 +238,9 @@ int main(int argc, char** argv)
 {
     return run_program("10_hierarchies", [&] {
         Options o;
-        o.common.out = "10_hierarchies.png";
-        CommandLine cli("10_hierarchies", "Hierarchies: a bounding volume hierarchy built by the surface area heuristic.");
-        add_common_options(cli, o.common);
+        CommandLine cli = program_command_line(
+            "10_hierarchies", "Hierarchies: a bounding volume hierarchy built by the surface area heuristic.",
+            o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel,
@@ -258,9 +256,7 @@ int main(int argc, char** argv)
                    "2); the root is 0",
                    0, bvh_stack_size - 2);
         cli.option("--split", o.split, "with bvh: sah (the surface area heuristic) or median");
-        cli.flag("--sweep", o.sweep, "measure leaf size, depth and split, and every structure side by side");
-        cli.option("--repeat", o.repeat, "runs per measurement; tables give the median", 1, 100);
-        cli.option("--csv", o.csv, "where --sweep writes its table");
+        add_sweep_options(cli, o.sweep, "measure leaf size, depth and split, and every structure side by side");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
         if (o.accel != "bvh" && o.accel != "hgrid" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
@@ -284,6 +280,6 @@ int main(int argc, char** argv)
             o.bvh.max_depth = o.hgrid.max_depth = o.max_depth;
         if (o.accel == "hashed" && !cli.given("--lambda"))
             o.lambda = ch09::default_hashed_lambda;
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, o.csv, [&] { sweep(o, cli); });
+        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }
