@@ -9,7 +9,7 @@
 #pragma once
 
 #include "02_spheres_triangles/exact.hpp"
-#include "02_spheres_triangles/mesh.hpp"
+#include "02_spheres_triangles/mesh_scene.hpp"
 #include "common/random.hpp"
 
 #include <algorithm>
@@ -138,7 +138,7 @@ TriangleProbes<T> probes_on(const IndexedMesh& mesh, typename TriangleProbes<T>:
     TriangleProbes<T> probes;
     probes.expect = expect;
     for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
-        probes.triangles.push_back(in_precision<T>(mesh.triangle(f)));
+        probes.triangles.push_back(in_precision<T>(triangle_of(mesh, f)));
     return probes;
 }
 
@@ -217,7 +217,7 @@ TriangleProbes<T> inside_far_mesh(int count, std::uint64_t seed)
     TriangleProbes<T> probes = probes_on<T>(mesh, TriangleProbes<T>::Expect::some_hit);
     const int faces = static_cast<int>(mesh.faces.size());
     for (int k = 0; k < count; ++k) {
-        const Triangle t = mesh.triangle(std::min(faces - 1, static_cast<int>(rng.next_float() * static_cast<float>(faces))));
+        const Triangle t = triangle_of(mesh, std::min(faces - 1, static_cast<int>(rng.next_float() * static_cast<float>(faces))));
         const point3 target = k % 2 ? t.a : t.a + rng.next_float() * (t.b - t.a);  // a vertex, or a point of an edge
         probes.add(ray_towards<T>(centre, target), {});
     }
@@ -234,7 +234,7 @@ TriangleProbes<T> around_triangles(const IndexedMesh& mesh, int count, std::uint
     const int faces = static_cast<int>(mesh.faces.size());
     for (int k = 0; k < count; ++k) {
         const int f = std::min(faces - 1, static_cast<int>(rng.next_float() * static_cast<float>(faces)));
-        const Triangle t = mesh.triangle(f);
+        const Triangle t = triangle_of(mesh, f);
         const float beta = 1.5f * rng.next_float() - 0.25f, gamma = 1.5f * rng.next_float() - 0.25f;
         const point3 target = t.a + beta * (t.b - t.a) + gamma * (t.c - t.a);
         probes.add(ray_towards<T>(target + 3.0f * random_unit_vector(rng), target), {f});

@@ -7,7 +7,7 @@
 
 #include "01_ray_casting/01_ray_casting.hpp"
 #include "02_spheres_triangles/closest_hit.hpp"
-#include "02_spheres_triangles/mesh.hpp"
+#include "02_spheres_triangles/mesh_scene.hpp"
 #include "common/render.hpp"
 
 namespace rt::ch02 {

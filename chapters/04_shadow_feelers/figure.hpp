@@ -10,7 +10,7 @@
 #pragma once
 
 #include "01_ray_casting/01_ray_casting.hpp"
-#include "02_spheres_triangles/mesh.hpp"
+#include "02_spheres_triangles/mesh_scene.hpp"
 #include "04_shadow_feelers/closest_hit.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "common/render.hpp"
@@ -32,7 +32,7 @@ inline CameraSpec figure_camera(int width, int height, float scale = 1.0f)
 inline void add_mesh(LitScene& scene, const IndexedMesh& mesh, int material)
 {
     for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
-        scene.add_triangle(mesh.triangle(f), material);
+        scene.add_triangle(triangle_of(mesh, f), material);
 }
 
 inline LitScene figure_scene(float scale = 1.0f)

@@ -96,7 +96,7 @@ inline std::vector<SurfacePoint> surface_points(const ScaledScene& scene, Surfac
         const IndexedMesh& mesh = surface == Surface::floor ? scene.floor : scene.mesh;
         const int faces = static_cast<int>(mesh.faces.size());
         const int f = std::min(faces - 1, static_cast<int>(rng.next_float() * static_cast<float>(faces)));
-        const Triangle tri = mesh.triangle(f);
+        const Triangle tri = triangle_of(mesh, f);
         float beta = rng.next_float(), gamma = rng.next_float();
         if (beta + gamma > 1.0f) {  // fold the square onto the triangle: uniform over it
             beta = 1.0f - beta;
@@ -159,9 +159,9 @@ inline bool rehits(const ScaledScene& scene, const Feeler& f, Test test = Test::
     case Surface::sphere:
         return hit_sphere_precise(f.ray, scene.sphere, f.range).has_value();
     case Surface::triangles:
-        return hits_triangle(f, scene.mesh.triangle(f.from.face), test);
+        return hits_triangle(f, triangle_of(scene.mesh, f.from.face), test);
     case Surface::floor:
-        return hits_triangle(f, scene.floor.triangle(f.from.face), test);
+        return hits_triangle(f, triangle_of(scene.floor, f.from.face), test);
     }
     return false;  // not reached: the switch names every surface
 }

@@ -1,6 +1,6 @@
 #include "common/scenes/nff_generators.hpp"
 
-#include "02_spheres_triangles/mesh.hpp"
+#include "common/mesh.hpp"
 #include "common/random.hpp"
 #include "common/vec.hpp"
 
@@ -388,8 +388,8 @@ void write_stadium(std::ostream& out, int depth)
     w.material(dvec3(0.9, 0.85, 0.8), 0.7, 0.3, 50.0);
     const IndexedMesh pot = icosphere(point3(0.0f, 1.0f, 0.0f), 1.0f, depth);
     for (int f = 0; f < static_cast<int>(pot.faces.size()); ++f) {
-        const Triangle t = pot.triangle(f);
-        w.polygon({dvec3(t.a), dvec3(t.b), dvec3(t.c)});
+        const std::array<point3, 3> c = pot.corners(f);
+        w.polygon({dvec3(c[0]), dvec3(c[1]), dvec3(c[2])});
     }
 }
 

@@ -1,5 +1,5 @@
 // EXERCISE 04.2: the any-hit shadow feeler: anything strictly between the origin and the light?
-#include "02_spheres_triangles/mesh.hpp"
+#include "02_spheres_triangles/mesh_scene.hpp"
 #include "tests/ch04/describe.hpp"
 
 using namespace rt;
@@ -157,7 +157,7 @@ STABILITY_TEST("occluded: a light inside a closed object is hidden from every po
     const IndexedMesh mesh = icosphere({0, 5, 0}, 1.0f, 2);
     std::vector<Triangle> triangles;
     for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
-        triangles.push_back(mesh.triangle(f));
+        triangles.push_back(triangle_of(mesh, f));
     const LitScene closed = scene_of({}, triangles);
     int slipped = 0;
     point3 first{0.0f};

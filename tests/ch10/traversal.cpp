@@ -108,7 +108,7 @@ STABILITY_TEST("watertight together: 10^6 rays from inside a closed sphere of tr
     const IndexedMesh mesh = icosphere(centre, 1000.0f, 4);
     std::vector<Triangle> tris;
     for (int f = 0; f < static_cast<int>(mesh.faces.size()); ++f)
-        tris.push_back(mesh.triangle(f));
+        tris.push_back(triangle_of(mesh, f));
     Objects o;
     o.triangles = tris.data();
     o.triangle_count = static_cast<int>(tris.size());
