@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <ostream>
 
 namespace rt {
 
@@ -31,6 +32,10 @@ public:
 
     // What it holds beyond the objects themselves, for --stats and the trade tables.
     virtual std::size_t bytes() const = 0;
+
+    // Its lines of --stats (name=value, one a line): its shape, what it holds and what its build
+    // cost. Each structure says its own, so a program prints whichever it was given.
+    virtual void report(std::ostream& out) const { out << "bytes=" << bytes() << '\n'; }
 };
 
 // The range an object must be hit in to beat the best hit so far: up to best.t, and for an object

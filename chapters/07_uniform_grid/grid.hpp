@@ -86,6 +86,7 @@ inline Bounds resolution_box(const Bounds& box)
 
 // What the grid's build reports (--stats, the trade tables).
 struct GridStats {
+    int objects = 0;
     cell3 resolution{1};
     float lambda = 0.0f;  // the lambda built with: the one asked for, or lower (plan_grid)
     long long cells = 0;
@@ -236,6 +237,7 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
     const int cell_count = grid.shape.cell_count();
 
     if (stats) {
+        stats->objects = count;
         stats->resolution = grid.shape.n;
         stats->lambda = plan.lambda;
         stats->cells = cell_count;
@@ -249,9 +251,6 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
     return grid;
 }
 
-// The slides' walk for the closest hit: the cells in order along the ray, each asked with the cell
-// query (07.6); the first cell that keeps a hit ends it, since every later cell lies farther on.
-// The any-hit walk asks each object for any hit in the whole range: any one ends it.
 // Whether a walk that is over (its next boundary not below t_end) ended short of the grid: neither at
 // the end of the query's range nor in a cell on the face it leaves through. That happens where the
 // cells are finer than the float steps of t (a scene 1e-6 across seen from 10 away, found by
@@ -274,6 +273,83 @@ inline bool walk_cut_short(const GridShape& grid, const GridWalk& walk)
     return true;
 }
 
+// The walk every grid of chapters 07-10 shares (Amanatides and Woo's loop): from a started walk
+// (07.4), each cell in order along the ray, counted, then asked with `visit`, which returns true to
+// stop the walk there; `next` steps to the following cell (07.5's next_cell, or a structure's own
+// step that keeps something along, such as chapter 09's residue). Returns whether a visit stopped
+// it, with `walk` left at that cell; false for a missed walk or one that ran to its end.
+template <class Visit, class Next>
+bool walk_cells(GridWalk& walk, Visit&& visit, Next&& next)
+{
+    if (walk.missed)
+        return false;
+    do {
+        count(Counter::cells_visited);
+        if (visit(walk))
+            return true;
+    } while (next(walk));
+    return false;
+}
+
+template <class Visit>
+bool walk_cells(GridWalk& walk, Visit&& visit)
+{
+    return walk_cells(walk, visit, next_cell);
+}
+
+// A grid's closest hit, the slides' walk: the cells in order, each asked with its cell query
+// (query(walk, best): 07.6, 08.3 or 09.5); the first cell that keeps a hit ends it, since every
+// later cell lies farther on. A walk cut short (walk_cut_short) asks brute force for that one ray.
+template <class CellQuery, class Next>
+bool grid_closest(const GridShape& shape, GridWalk& walk, const Ray& ray, Interval range, const Objects& objects,
+                  ObjectHit& hit, CellQuery&& query, Next&& next)
+{
+    if (walk.missed)
+        return false;
+    ObjectHit best;
+    const bool found = walk_cells(walk, [&](const GridWalk& w) { return query(w, best); }, next);
+    if (walk_cut_short(shape, walk))
+        return brute_force().closest(ray, range, objects, hit);
+    if (found)
+        hit = best;
+    return found;
+}
+
+// A grid's any hit: the cells in order, each asked whether any of its objects is hit anywhere in
+// the range (any_in(walk)); the first that is ends it.
+template <class AnyInCell, class Next>
+bool grid_any(const GridShape& shape, GridWalk& walk, const Ray& ray, Interval range, const Objects& objects,
+              AnyInCell&& any_in, Next&& next)
+{
+    if (walk.missed)
+        return false;
+    return walk_cells(walk, any_in, next) || (walk_cut_short(shape, walk) && brute_force().any(ray, range, objects));
+}
+
+// Whether any object a grid's cell p lists is hit, each asked with test(k): the any-hit cell of
+// every grid that lists its objects in two flat arrays.
+template <class Test>
+bool any_listed(const Grid& grid, int p, Test&& test)
+{
+    for (std::uint32_t i = grid.cell_start[p]; i < grid.cell_start[p + 1]; ++i)
+        if (test(static_cast<int>(grid.object_index[i])))
+            return true;
+    return false;
+}
+
+// The grid's --stats lines (the lesson's "The program" lists them).
+inline void report_grid(std::ostream& out, const GridStats& s)
+{
+    out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+        << "grid_lambda=" << s.lambda << '\n'
+        << "grid_cells=" << s.cells << '\n'
+        << "grid_empty_cells=" << s.empty_cells << '\n'
+        << "grid_references=" << s.references << '\n'
+        << "references_per_object=" << (s.objects > 0 ? static_cast<double>(s.references) / s.objects : 0.0) << '\n'
+        << "grid_bytes=" << s.bytes << '\n'
+        << "build_seconds=" << s.build_seconds << '\n';
+}
+
 class UniformGrid final : public Accelerator {
 public:
     UniformGrid(const Objects& objects, float lambda) : grid_(build_grid(objects, lambda, &stats_)) {}
@@ -283,37 +359,24 @@ public:
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
         GridWalk walk = start_walk(grid_.shape, ray, range);
-        if (walk.missed)
-            return false;
-        ObjectHit best;
-        do {
-            count(Counter::cells_visited);
-            if (closest_in_cell(grid_, walk, ray, range, objects, best)) {
-                if (walk_cut_short(grid_.shape, walk))
-                    return brute_force().closest(ray, range, objects, hit);
-                hit = best;
-                return true;
-            }
-        } while (next_cell(walk));
-        return walk_cut_short(grid_.shape, walk) && brute_force().closest(ray, range, objects, hit);
+        const auto query = [&](const GridWalk& w, ObjectHit& best) {
+            return closest_in_cell(grid_, w, ray, range, objects, best);
+        };
+        return grid_closest(grid_.shape, walk, ray, range, objects, hit, query, next_cell);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
         GridWalk walk = start_walk(grid_.shape, ray, range);
-        if (walk.missed)
-            return false;
         ObjectHit hit;
-        do {
-            count(Counter::cells_visited);
-            for (std::uint32_t i = grid_.cell_start[walk.p]; i < grid_.cell_start[walk.p + 1]; ++i)
-                if (objects.intersect(static_cast<int>(grid_.object_index[i]), ray, range, hit))
-                    return true;
-        } while (next_cell(walk));
-        return walk_cut_short(grid_.shape, walk) && brute_force().any(ray, range, objects);
+        const auto any_in = [&](const GridWalk& w) {
+            return any_listed(grid_, w.p, [&](int k) { return objects.intersect(k, ray, range, hit); });
+        };
+        return grid_any(grid_.shape, walk, ray, range, objects, any_in, next_cell);
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
+    void report(std::ostream& out) const override { report_grid(out, stats_); }
 
     const Grid& grid() const { return grid_; }
     const GridStats& stats() const { return stats_; }

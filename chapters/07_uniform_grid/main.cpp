@@ -31,24 +31,6 @@ struct Options {
     SweepOptions sweep{false, 5, "07_uniform_grid.csv"};
 };
 
-// The --stats lines of the structure, after the render's own.
-void print_structure_stats(std::ostream& out, const std::string& accel, int objects, const UniformGrid* grid,
-                           const Counts& counts)
-{
-    out << "accel=" << accel << '\n' << "objects=" << objects << '\n';
-    out << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n';
-    if (!grid)
-        return;
-    const GridStats& s = grid->stats();
-    out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
-        << "grid_cells=" << s.cells << '\n'
-        << "grid_empty_cells=" << s.empty_cells << '\n'
-        << "grid_references=" << s.references << '\n'
-        << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
-        << "grid_bytes=" << s.bytes << '\n'
-        << "build_seconds=" << s.build_seconds << '\n';
-}
-
 SceneProgram scene_program(const Options& o)
 {
     return {"07_uniform_grid",
@@ -56,9 +38,8 @@ SceneProgram scene_program(const Options& o)
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
             [&o](const Objects& objects) { return ch07::make_accelerator(o.accel, objects, o.lambda); },
-            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
-                print_structure_stats(out, o.accel, objects, dynamic_cast<const UniformGrid*>(accel), counts);
-            },
+            [&o] { return o.accel; },
+            {{"cells_visited", Counter::cells_visited}},
             {}};
 }
 
@@ -79,10 +60,13 @@ struct Measured {
 // the render's median time over `runs` more.
 Measured measure(const NffScene& nff, const std::string& accel, float lambda, const RenderSettings& settings, int runs)
 {
-    const Measurement r = measure_structure(
-        nff, [&](const Objects& objects) { return ch07::make_accelerator(accel, objects, lambda); }, settings,
-        accel == "brute" ? 1 : runs, runs);
+    GridStats grid;
+    const StructureMaker make =
+        accel == "grid" ? keeping_stats<UniformGrid>(grid, lambda)
+                        : [&](const Objects& objects) { return ch07::make_accelerator(accel, objects, lambda); };
+    const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : runs, runs);
     Measured m;
+    m.grid = grid;
     m.objects = r.objects;
     m.runs = runs;
     m.build_ms = r.build_ms;
@@ -92,8 +76,6 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, co
     m.tests_per_ray = r.per_ray(Counter::intersection_tests);
     m.cells_per_ray = r.per_ray(Counter::cells_visited);
     m.pixels = r.pixels;
-    if (const auto* grid = dynamic_cast<const UniformGrid*>(r.structure.get()))
-        m.grid = grid->stats();
     return m;
 }
 

@@ -15,7 +15,7 @@
 namespace rt {
 
 struct Measurement {
-    std::unique_ptr<Accelerator> structure;  // kept, for the chapter's own statistics (nullptr: brute force)
+    std::unique_ptr<Accelerator> structure;  // what the renders went through (nullptr: brute force)
     int objects = 0;
     Timing build_ms, render_ms;
     std::size_t bytes = 0;
@@ -27,6 +27,18 @@ struct Measurement {
 };
 
 using StructureMaker = std::function<std::unique_ptr<Accelerator>(const Objects&)>;
+
+// A maker of structure S (built as S(objects, args...)) that keeps S's own statistics (its
+// stats()) in `stats` at each build: a sweep that knows what it builds reads them there.
+template <class S, class Stats, class... Args>
+StructureMaker keeping_stats(Stats& stats, Args... args)
+{
+    return [&stats, args...](const Objects& objects) -> std::unique_ptr<Accelerator> {
+        auto structure = std::make_unique<S>(objects, args...);
+        stats = structure->stats();
+        return structure;
+    };
+}
 
 // `builds` builds (1 is enough for brute force, which builds nothing) and `renders` timed renders.
 inline Measurement measure_structure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings,

@@ -45,9 +45,12 @@ struct SceneProgram {
         std::string caption;
     };
     std::vector<Heat> heat;
-    // The accelerator for a scene's objects (nullptr: brute force), and its --stats lines.
+    // The accelerator for a scene's objects (nullptr: brute force).
     std::function<std::unique_ptr<Accelerator>(const Objects&)> make;
-    std::function<void(std::ostream&, const Accelerator*, int objects, const Counts&)> print;
+    // What --stats adds to the render's lines: accel=<accel_name()>, objects=N, the counters of
+    // stats_counters (name=count), then the structure's own report (Accelerator::report).
+    std::function<std::string()> accel_name;
+    std::vector<std::pair<std::string, Counter>> stats_counters;
     // Structures the figure compares (chapter 10: the grid, the hierarchy of grids and the BVH):
     // when given, the figure is the render beside one heat map for each, on one scale, in place of
     // its own accelerator's map. The maps count what every structure does, the program's heat named
@@ -166,7 +169,11 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
     const auto stats = [&](StatsPrinter base, const Accelerator* accel, int objects) {
         return [=, &program](std::ostream& out, const Counts& counts, double seconds) {
             base(out, counts, seconds);
-            program.print(out, accel, objects, counts);
+            out << "accel=" << program.accel_name() << '\n' << "objects=" << objects << '\n';
+            for (const auto& [name, counter] : program.stats_counters)
+                out << name << '=' << counted(counts, counter) << '\n';
+            if (accel)
+                accel->report(out);
         };
     };
     if (o.classic) {

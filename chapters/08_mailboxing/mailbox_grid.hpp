@@ -28,43 +28,38 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        GridWalk walk = start_walk(grid_.grid().shape, ray, range);
+        const Grid& g = grid_.grid();
+        GridWalk walk = start_walk(g.shape, ray, range);
         if (walk.missed)
-            return false;
+            return false;  // before next_signature: a ray that meets no cell takes no signature
         Mailboxes& m = mailboxes();
         const std::uint32_t signature = next_signature(m);
-        ObjectHit best;
-        do {
-            count(Counter::cells_visited);
-            if (closest_in_cell_mailboxed(grid_.grid(), walk, m, signature, ray, range, objects, best)) {
-                if (walk_cut_short(grid_.grid().shape, walk))  // (grid.hpp)
-                    return brute_force().closest(ray, range, objects, hit);
-                hit = best;
-                return true;
-            }
-        } while (next_cell(walk));
-        return walk_cut_short(grid_.grid().shape, walk) && brute_force().closest(ray, range, objects, hit);
+        const auto query = [&](const GridWalk& w, ObjectHit& best) {
+            return closest_in_cell_mailboxed(g, w, m, signature, ray, range, objects, best);
+        };
+        return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);  // (grid.hpp)
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
-        GridWalk walk = start_walk(grid_.grid().shape, ray, range);
+        const Grid& g = grid_.grid();
+        GridWalk walk = start_walk(g.shape, ray, range);
         if (walk.missed)
             return false;
         Mailboxes& m = mailboxes();
         const std::uint32_t signature = next_signature(m);
-        const Grid& g = grid_.grid();
         ObjectHit hit;
-        do {
-            count(Counter::cells_visited);
-            for (std::uint32_t i = g.cell_start[walk.p]; i < g.cell_start[walk.p + 1]; ++i)
-                if (mailboxed_intersect(m, signature, objects, static_cast<int>(g.object_index[i]), ray, range, hit))
-                    return true;
-        } while (next_cell(walk));
-        return walk_cut_short(g.shape, walk) && brute_force().any(ray, range, objects);
+        const auto ask = [&](int k) { return mailboxed_intersect(m, signature, objects, k, ray, range, hit); };
+        const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, ask); };
+        return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
     }
 
     std::size_t bytes() const override { return grid_.bytes(); }
+    void report(std::ostream& out) const override
+    {
+        grid_.report(out);
+        out << "mailbox_bytes_per_thread=" << mailbox_bytes_per_thread() << '\n';
+    }
     std::size_t mailbox_bytes_per_thread() const { return static_cast<std::size_t>(objects_) * sizeof(Mailbox); }
     const UniformGrid& grid() const { return grid_; }
 

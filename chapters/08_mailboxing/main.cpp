@@ -31,26 +31,6 @@ struct Options {
     SweepOptions sweep{false, 9, "08_mailboxing.csv"};
 };
 
-void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
-                           const Counts& counts)
-{
-    out << "accel=" << o.accel << (o.accel == "grid" ? (o.mailbox == "on" ? "+mailboxes" : "") : "") << '\n'
-        << "objects=" << objects << '\n'
-        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n'
-        << "tests_answered_by_mailboxes=" << counted(counts, Counter::mailbox_hits) << '\n';
-    const auto* mailboxed = dynamic_cast<const MailboxGrid*>(accel);
-    const auto* plain = dynamic_cast<const UniformGrid*>(accel);
-    const UniformGrid* grid = mailboxed ? &mailboxed->grid() : plain;
-    if (!grid)
-        return;
-    const GridStats& s = grid->stats();
-    out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
-        << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
-        << "grid_bytes=" << s.bytes << '\n'
-        << "mailbox_bytes_per_thread=" << (mailboxed ? mailboxed->mailbox_bytes_per_thread() : 0) << '\n'
-        << "build_seconds=" << s.build_seconds << '\n';
-}
-
 SceneProgram scene_program(const Options& o)
 {
     return {"08_mailboxing",
@@ -59,9 +39,8 @@ SceneProgram scene_program(const Options& o)
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
             [&o](const Objects& objects) { return ch08::make_accelerator(o.accel, o.mailbox == "on", objects, o.lambda); },
-            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
-                print_structure_stats(out, o, objects, accel, counts);
-            },
+            [&o] { return o.accel + (o.accel == "grid" && o.mailbox == "on" ? "+mailboxes" : ""); },
+            {{"cells_visited", Counter::cells_visited}, {"tests_answered_by_mailboxes", Counter::mailbox_hits}},
             {}};
 }
 

@@ -22,6 +22,7 @@
 namespace rt {
 
 struct HashedGridStats {
+    int objects = 0;
     cell3 resolution{1};
     float lambda = 0.0f;       // the lambda built with: the one asked for, or lower (plan_grid)
     long long cells = 0;       // of the whole grid, empty or not
@@ -60,17 +61,11 @@ public:
         if (walk.missed)
             return false;
         Residue r = residue_of(walk);
-        ObjectHit best;
-        do {
-            count(Counter::cells_visited);
-            if (closest_in_hashed_cell(table_, bits_, walk, r.r, ray, range, objects, best)) {
-                if (walk_cut_short(shape_, walk))  // (chapter 07's grid.hpp)
-                    return brute_force().closest(ray, range, objects, hit);
-                hit = best;
-                return true;
-            }
-        } while (step(walk, r));
-        return walk_cut_short(shape_, walk) && brute_force().closest(ray, range, objects, hit);
+        const auto query = [&](const GridWalk& w, ObjectHit& best) {
+            return closest_in_hashed_cell(table_, bits_, w, r.r, ray, range, objects, best);
+        };
+        // Chapter 07's walk (grid.hpp), each step keeping the residue along.
+        return grid_closest(shape_, walk, ray, range, objects, hit, query, [&](GridWalk& w) { return step(w, r); });
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
@@ -80,23 +75,43 @@ public:
             return false;
         Residue r = residue_of(walk);
         ObjectHit hit;
-        do {
-            count(Counter::cells_visited);
-            if (!occupied(bits_, walk.p)) {
+        const auto any_in = [&](const GridWalk& w) {
+            if (!occupied(bits_, w.p)) {
                 count(Counter::table_lookups_skipped);
-                continue;
+                return false;
             }
             count(Counter::table_lookups);
-            if (const HashedCell* cell = find_cell(table_, walk.p, r.r))
-                for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
-                    if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
-                        return true;
-        } while (step(walk, r));
-        return walk_cut_short(shape_, walk) && brute_force().any(ray, range, objects);
+            const HashedCell* cell = find_cell(table_, w.p, r.r);
+            if (!cell)
+                return false;
+            for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
+                if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
+                    return true;
+            return false;
+        };
+        return grid_any(shape_, walk, ray, range, objects, any_in, [&](GridWalk& w) { return step(w, r); });
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
     const HashedGridStats& stats() const { return stats_; }
+
+    void report(std::ostream& out) const override
+    {
+        const HashedGridStats& s = stats_;
+        out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
+            << "grid_lambda=" << s.lambda << '\n'
+            << "grid_cells=" << s.cells << '\n'
+            << "occupied_cells=" << s.occupied << '\n'
+            << "table_size=" << s.M << '\n'
+            << "table_load=" << static_cast<double>(s.occupied) / s.M << '\n'
+            << "table_collisions=" << s.collisions << '\n'
+            << "references_per_object=" << (s.objects > 0 ? static_cast<double>(s.references) / s.objects : 0.0)
+            << '\n'
+            << "table_bytes=" << s.table_bytes << '\n'
+            << "bits_bytes=" << s.bits_bytes << '\n'
+            << "bytes=" << s.bytes << '\n'
+            << "build_seconds=" << s.build_seconds << '\n';
+    }
     const HashTable& table() const { return table_; }
     const GridShape& shape() const { return shape_; }
 
@@ -196,6 +211,7 @@ private:
         for (const HashedCell& c : by_address)
             bits_.words[static_cast<std::uint32_t>(c.p) >> 6] |= std::uint64_t{1} << (static_cast<std::uint32_t>(c.p) & 63u);
 
+        stats_.objects = count;
         stats_.resolution = n;
         stats_.lambda = plan.lambda;
         stats_.cells = cells;

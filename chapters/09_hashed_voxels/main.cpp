@@ -29,36 +29,6 @@ struct Options {
     SweepOptions sweep{false, 5, "09_hashed_voxels.csv"};
 };
 
-void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
-                           const Counts& counts)
-{
-    out << "accel=" << o.accel << '\n'
-        << "objects=" << objects << '\n'
-        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n'
-        << "table_lookups=" << counted(counts, Counter::table_lookups) << '\n'
-        << "table_lookups_skipped=" << counted(counts, Counter::table_lookups_skipped) << '\n';
-    if (const auto* h = dynamic_cast<const HashedGrid*>(accel)) {
-        const HashedGridStats& s = h->stats();
-        out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
-            << "grid_cells=" << s.cells << '\n'
-            << "occupied_cells=" << s.occupied << '\n'
-            << "table_size=" << s.M << '\n'
-            << "table_load=" << static_cast<double>(s.occupied) / s.M << '\n'
-            << "table_collisions=" << s.collisions << '\n'
-            << "references_per_object=" << (objects > 0 ? static_cast<double>(s.references) / objects : 0.0) << '\n'
-            << "table_bytes=" << s.table_bytes << '\n'
-            << "bits_bytes=" << s.bits_bytes << '\n'
-            << "bytes=" << s.bytes << '\n'
-            << "build_seconds=" << s.build_seconds << '\n';
-    } else if (const auto* g = dynamic_cast<const UniformGrid*>(accel)) {
-        const GridStats& s = g->stats();
-        out << "grid_resolution=" << s.resolution.x << 'x' << s.resolution.y << 'x' << s.resolution.z << '\n'
-            << "grid_cells=" << s.cells << '\n'
-            << "bytes=" << s.bytes << '\n'
-            << "build_seconds=" << s.build_seconds << '\n';
-    }
-}
-
 SceneProgram scene_program(const Options& o)
 {
     return {"09_hashed_voxels",
@@ -69,9 +39,10 @@ SceneProgram scene_program(const Options& o)
             [&o](const Objects& objects) {
                 return ch09::make_accelerator(o.accel, objects, o.lambda, static_cast<std::uint32_t>(o.table_size));
             },
-            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
-                print_structure_stats(out, o, objects, accel, counts);
-            },
+            [&o] { return o.accel; },
+            {{"cells_visited", Counter::cells_visited},
+             {"table_lookups", Counter::table_lookups},
+             {"table_lookups_skipped", Counter::table_lookups_skipped}},
             {}};
 }
 
@@ -91,9 +62,14 @@ struct Measured {
 Measured measure(const NffScene& nff, const std::string& accel, float lambda, std::uint32_t table_size,
                  const RenderSettings& settings, int repeat)
 {
-    const Measurement r = measure_structure(
-        nff, [&](const Objects& objects) { return ch09::make_accelerator(accel, objects, lambda, table_size); }, settings,
-        accel == "brute" ? 1 : repeat, repeat);
+    HashedGridStats hashed;
+    GridStats grid;
+    const StructureMaker make =
+        accel == "hashed" ? keeping_stats<HashedGrid>(hashed, lambda, table_size)
+        : accel == "grid"
+            ? keeping_stats<UniformGrid>(grid, lambda)
+            : [&](const Objects& objects) { return ch09::make_accelerator(accel, objects, lambda, table_size); };
+    const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : repeat, repeat);
     Measured m;
     m.structure = accel;
     m.build_ms = r.build_ms;
@@ -104,15 +80,15 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, st
     m.cells_per_ray = r.per_ray(Counter::cells_visited);
     m.lookups_per_ray = r.per_ray(Counter::table_lookups);
     m.skipped_per_ray = r.per_ray(Counter::table_lookups_skipped);
-    if (const auto* h = dynamic_cast<const HashedGrid*>(r.structure.get())) {
-        m.resolution = h->stats().resolution;
-        m.occupied = h->stats().occupied;
-        m.references = h->stats().references;
-        m.collisions = h->stats().collisions;
-        m.M = h->stats().M;
-    } else if (const auto* g = dynamic_cast<const UniformGrid*>(r.structure.get())) {
-        m.resolution = g->stats().resolution;
-        m.references = g->stats().references;
+    if (accel == "hashed") {
+        m.resolution = hashed.resolution;
+        m.occupied = hashed.occupied;
+        m.references = hashed.references;
+        m.collisions = hashed.collisions;
+        m.M = hashed.M;
+    } else if (accel == "grid") {
+        m.resolution = grid.resolution;
+        m.references = grid.references;
     }
     return m;
 }

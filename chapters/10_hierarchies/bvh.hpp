@@ -59,6 +59,14 @@ public:
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
+    void report(std::ostream& out) const override
+    {
+        out << "bvh_nodes=" << stats_.nodes << '\n'
+            << "bvh_leaves=" << stats_.leaves << '\n'
+            << "bvh_depth=" << stats_.depth << '\n'
+            << "bytes=" << stats_.bytes << '\n'
+            << "build_seconds=" << stats_.build_seconds << '\n';
+    }
     const BvhStats& stats() const { return stats_; }
     const Bvh& bvh() const { return bvh_; }
 

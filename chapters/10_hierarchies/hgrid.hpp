@@ -79,6 +79,16 @@ public:
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
+    void report(std::ostream& out) const override
+    {
+        out << "hgrid_grids=" << stats_.grids << '\n'
+            << "hgrid_depth=" << stats_.depth << '\n'
+            << "hgrid_cells=" << stats_.cells << '\n'
+            << "hgrid_references=" << stats_.references << '\n'
+            << "hgrid_children_over_budget=" << stats_.children_over_budget << '\n'
+            << "bytes=" << stats_.bytes << '\n'
+            << "build_seconds=" << stats_.build_seconds << '\n';
+    }
     const HGridStats& stats() const { return stats_; }
     const HGrid& hgrid() const { return h_; }
 
@@ -165,22 +175,13 @@ private:
     {
         const GridNode& node = h_.grids[g];
         GridWalk walk = start_walk(node.grid.shape, ray, part);
-        if (walk.missed)
-            return false;
         ObjectHit hit;
-        do {
-            count(Counter::cells_visited);
-            const int child = node.child[walk.p];
-            if (child >= 0) {
-                if (any_in(child, ray, {walk.t_enter, walk.cell_exit()}, range, objects))
-                    return true;
-                continue;
-            }
-            for (std::uint32_t i = node.grid.cell_start[walk.p]; i < node.grid.cell_start[walk.p + 1]; ++i)
-                if (objects.intersect(static_cast<int>(node.grid.object_index[i]), ray, range, hit))
-                    return true;
-        } while (next_cell(walk));
-        return false;
+        return walk_cells(walk, [&](const GridWalk& w) {  // chapter 07's walk (grid.hpp)
+            const int child = node.child[w.p];
+            if (child >= 0)
+                return any_in(child, ray, {w.t_enter, w.cell_exit()}, range, objects);
+            return any_listed(node.grid, w.p, [&](int k) { return objects.intersect(k, ray, range, hit); });
+        });
     }
 
     // Whether the float steps of t where the ray crosses the root's box are as large as a quarter of

@@ -33,31 +33,6 @@ struct Options {
     SweepOptions sweep{false, 5, "10_hierarchies.csv"};
 };
 
-void print_structure_stats(std::ostream& out, const Options& o, int objects, const Accelerator* accel,
-                           const Counts& counts)
-{
-    out << "accel=" << o.accel << '\n'
-        << "objects=" << objects << '\n'
-        << "nodes_visited=" << counted(counts, Counter::nodes_visited) << '\n'
-        << "cells_visited=" << counted(counts, Counter::cells_visited) << '\n';
-    if (const auto* b = dynamic_cast<const BvhAccel*>(accel))
-        out << "bvh_nodes=" << b->stats().nodes << '\n'
-            << "bvh_leaves=" << b->stats().leaves << '\n'
-            << "bvh_depth=" << b->stats().depth << '\n'
-            << "bytes=" << b->stats().bytes << '\n'
-            << "build_seconds=" << b->stats().build_seconds << '\n';
-    else if (const auto* h = dynamic_cast<const HGridAccel*>(accel))
-        out << "hgrid_grids=" << h->stats().grids << '\n'
-            << "hgrid_depth=" << h->stats().depth << '\n'
-            << "hgrid_cells=" << h->stats().cells << '\n'
-            << "hgrid_references=" << h->stats().references << '\n'
-            << "hgrid_children_over_budget=" << h->stats().children_over_budget << '\n'
-            << "bytes=" << h->stats().bytes << '\n'
-            << "build_seconds=" << h->stats().build_seconds << '\n';
-    else if (accel)
-        out << "bytes=" << accel->bytes() << '\n';
-}
-
 SceneProgram scene_program(const Options& o)
 {
     const auto default_structure = [](const std::string& name) {
@@ -71,9 +46,8 @@ SceneProgram scene_program(const Options& o)
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
             [&o](const Objects& objects) { return ch10::make_accelerator(o.accel, objects, o.lambda, o.bvh, o.hgrid); },
-            [&o](std::ostream& out, const Accelerator* accel, int objects, const Counts& counts) {
-                print_structure_stats(out, o, objects, accel, counts);
-            },
+            [&o] { return o.accel; },
+            {{"nodes_visited", Counter::nodes_visited}, {"cells_visited", Counter::cells_visited}},
             {{"uniform grid", default_structure("grid")},
              {"hierarchy of grids", default_structure("hgrid")},
              {"BVH", default_structure("bvh")}}};
@@ -81,28 +55,10 @@ SceneProgram scene_program(const Options& o)
 
 // --- The trade ---
 
-struct Measured {
-    Timing build_ms, render_ms;
-    std::size_t bytes = 0;
-    double tests_per_ray = 0.0, nodes_per_ray = 0.0, cells_per_ray = 0.0;
-    std::vector<std::uint8_t> pixels;
-    BvhStats tree;
-};
-
-Measured measure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings, int repeat)
+// One structure on one scene (measure.hpp): `repeat` builds and timed renders, medians.
+Measurement measure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings, int repeat)
 {
-    const Measurement r = measure_structure(nff, make, settings, repeat, repeat);
-    Measured m;
-    m.build_ms = r.build_ms;
-    m.render_ms = r.render_ms;
-    m.bytes = r.bytes;
-    m.pixels = r.pixels;
-    m.tests_per_ray = r.per_ray(Counter::intersection_tests);
-    m.nodes_per_ray = r.per_ray(Counter::nodes_visited);
-    m.cells_per_ray = r.per_ray(Counter::cells_visited);
-    if (const auto* b = dynamic_cast<const BvhAccel*>(r.structure.get()))
-        m.tree = b->stats();
-    return m;
+    return measure_structure(nff, make, settings, repeat, repeat);
 }
 
 std::string ms(const Timing& t)
@@ -118,7 +74,7 @@ void sweep(const Options& o, const CommandLine& cli)
     std::ofstream csv(o.sweep.csv);
     csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms,"
            "build_ms_min,build_ms_max,render_ms_min,render_ms_max,runs\n";
-    const auto csv_times = [&](const Measured& m) {
+    const auto csv_times = [&](const Measurement& m) {
         csv << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ',' << m.render_ms.max << ','
             << o.sweep.repeat << '\n';
     };
@@ -137,19 +93,21 @@ void sweep(const Options& o, const CommandLine& cli)
         b.split = split;
         b.leaf_size = leaf;
         b.max_depth = depth;
-        const Measured m = measure(stadium, [&](const Objects& objs) { return std::make_unique<BvhAccel>(objs, b); },
-                                   settings, o.sweep.repeat);
+        BvhStats tree;
+        const Measurement m = measure(stadium, keeping_stats<BvhAccel>(tree, b), settings, o.sweep.repeat);
         if (reference.empty())
             reference = m.pixels;
         if (m.pixels != reference)
             throw std::runtime_error("a BVH's image differs from another's: a bug of the kit");
         bvh_table.row({split == BvhSplit::sah ? "SAH" : "median", std::to_string(leaf), std::to_string(depth),
-                       grouped(static_cast<unsigned long long>(m.tree.nodes)), std::to_string(m.tree.depth),
-                       fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.nodes_per_ray, 1),
-                       fixed(m.tests_per_ray, 1), ms(m.render_ms)});
-        csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",bvh," << (split == BvhSplit::sah ? "sah" : "median")
-            << ":leaf" << leaf << ":depth" << depth << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.tests_per_ray
-            << ',' << m.nodes_per_ray << ",0," << m.render_ms.median;
+                       grouped(static_cast<unsigned long long>(tree.nodes)), std::to_string(tree.depth),
+                       fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
+                       fixed(m.per_ray(Counter::nodes_visited), 1), fixed(m.per_ray(Counter::intersection_tests), 1),
+                       ms(m.render_ms)});
+        csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",bvh,"
+            << (split == BvhSplit::sah ? "sah" : "median") << ":leaf" << leaf << ":depth" << depth << ','
+            << m.build_ms.median << ',' << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ','
+            << m.per_ray(Counter::nodes_visited) << ",0," << m.render_ms.median;
         csv_times(m);
     };
     for (const int leaf : {1, 2, 4, 8, 16, 32})
@@ -173,20 +131,17 @@ void sweep(const Options& o, const CommandLine& cli)
             h.leaf_size = leaf;
             h.max_depth = depth;
             HGridStats built;
-            const Measured m = measure(stadium, [&](const Objects& objs) {
-                auto accel = std::make_unique<HGridAccel>(objs, h);
-                built = accel->stats();
-                return accel;
-            }, settings, o.sweep.repeat);
+            const Measurement m = measure(stadium, keeping_stats<HGridAccel>(built, h), settings, o.sweep.repeat);
             if (m.pixels != reference)
                 throw std::runtime_error("a hierarchy of grids' image differs from the BVH's: a bug of the kit");
-            hgrid_table.row({std::to_string(leaf), std::to_string(depth), grouped(static_cast<unsigned long long>(built.grids)),
-                             grouped(static_cast<unsigned long long>(built.cells)),
-                             fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.cells_per_ray, 1),
-                             fixed(m.tests_per_ray, 1), ms(m.render_ms)});
-            csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",hgrid,leaf" << leaf << ":depth" << depth << ','
-                << m.build_ms.median << ',' << m.bytes << ',' << m.tests_per_ray << ",0," << m.cells_per_ray << ','
-                << m.render_ms.median;
+            hgrid_table.row(
+                {std::to_string(leaf), std::to_string(depth), grouped(static_cast<unsigned long long>(built.grids)),
+                 grouped(static_cast<unsigned long long>(built.cells)), fixed(static_cast<double>(m.bytes) / 1e6, 2),
+                 ms(m.build_ms), fixed(m.per_ray(Counter::cells_visited), 1),
+                 fixed(m.per_ray(Counter::intersection_tests), 1), ms(m.render_ms)});
+            csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",hgrid,leaf" << leaf << ":depth" << depth
+                << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ",0,"
+                << m.per_ray(Counter::cells_visited) << ',' << m.render_ms.median;
             csv_times(m);
         }
 
@@ -207,7 +162,7 @@ void sweep(const Options& o, const CommandLine& cli)
         std::vector<std::uint8_t> same;
         for (const std::string name : {"bvh", "hgrid", "grid", "hashed"}) {
             const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
-            Measured m;
+            Measurement m;
             try {
                 m = measure(nff, [&](const Objects& objs) { return ch10::make_accelerator(name, objs, lambda, BvhSettings{}); },
                             settings, o.sweep.repeat);
@@ -219,12 +174,13 @@ void sweep(const Options& o, const CommandLine& cli)
                 same = m.pixels;
             if (m.pixels != same)
                 throw std::runtime_error("the " + name + "'s image differs from the BVH's on " + nff.name + ": a bug of the kit");
-            all.row({nff.name, grouped(objects_in(nff)), name, fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
-                     fixed(m.tests_per_ray, 1), fixed(name == "bvh" ? m.nodes_per_ray : m.cells_per_ray, 1),
+            all.row({nff.name, grouped(objects_in(nff)), name, fixed(static_cast<double>(m.bytes) / 1e6, 2),
+                     ms(m.build_ms), fixed(m.per_ray(Counter::intersection_tests), 1),
+                     fixed(name == "bvh" ? m.per_ray(Counter::nodes_visited) : m.per_ray(Counter::cells_visited), 1),
                      ms(m.render_ms)});
             csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << name << ",default," << m.build_ms.median << ','
-                << m.bytes << ',' << m.tests_per_ray << ',' << m.nodes_per_ray << ',' << m.cells_per_ray << ','
-                << m.render_ms.median;
+                << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ',' << m.per_ray(Counter::nodes_visited)
+                << ',' << m.per_ray(Counter::cells_visited) << ',' << m.render_ms.median;
             csv_times(m);
         }
     }
