@@ -21,20 +21,23 @@ namespace rt {
 
 // The nearest hit over all spheres, triangles and cones with t strictly inside `range`. Its normal
 // is the sphere's, the triangle's corner normals interpolated at the hit, or the cone's; `object`
-// counts the spheres first, then the triangles, then the cones (ShapeScene::object_is_sphere).
+// counts the spheres first, then the triangles, then the cones (object_ref, objects.hpp).
 inline std::optional<Hit> closest_hit(const Ray& ray, const ShapeScene& scene, Interval range, ShapeTests tests = {})
 {
     ObjectHit h;
     if (!brute_force().closest(ray, range, objects_of(scene, tests), h))
         return std::nullopt;
     const point3 p = ray.at(h.t);
-    if (scene.object_is_sphere(h.object))
-        return Hit{h.t, p, sphere_normal(scene.spheres[h.object], p), h.object};
-    if (scene.object_is_cone(h.object))
-        return Hit{h.t, p, cone_normal(scene.cones[scene.cone_index(h.object)], p), h.object};
-    const TriangleHit<float> on_triangle{h.t, h.beta, h.gamma};
-    const vec3 n = interpolated_normal(scene.corner_normals[scene.triangle_index(h.object)], on_triangle);
-    return Hit{h.t, p, n, h.object};
+    const ObjectRef o = object_ref(scene, h.object);
+    switch (o.kind) {
+    case ObjectKind::sphere:
+        return Hit{h.t, p, sphere_normal(scene.spheres[o.index], p), h.object};
+    case ObjectKind::triangle:
+        return Hit{h.t, p, interpolated_normal(scene.corner_normals[o.index], {h.t, h.beta, h.gamma}), h.object};
+    case ObjectKind::cone:
+        break;
+    }
+    return Hit{h.t, p, cone_normal(scene.cones[o.index], p), h.object};
 }
 
 }  // namespace rt

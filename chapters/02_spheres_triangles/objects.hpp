@@ -2,7 +2,8 @@
 // objects 0 .. S-1, triangles S .. S+T-1, cones after them (the order every chapter's scene
 // already numbers its hits in). An accelerator (chapters 07-10) never sees a sphere or a triangle:
 // it holds object numbers and asks this list two things, the object's bounds and whether a ray
-// hits it. A new kind of shape is one more case in `intersect` and in `bounds`, nothing else.
+// hits it. To them a new kind of shape is one more case in `intersect` and in `bounds` (the
+// README's "Adding a shape" lists what shading needs besides).
 //
 // The list is a view of the scene's own arrays (no copy), with the choice of tests a query asks
 // for: chapter 02's program picks among its sphere and triangle tests, chapter 04 on uses the
@@ -28,6 +29,58 @@ struct ObjectHit {
     float beta = 0.0f, gamma = 0.0f;
 };
 
+// The kinds of object, in the order the list numbers them. The numbering itself (spheres, then
+// triangles, then cones) is written once, in object_ref and first_of below: everything else asks
+// them.
+enum class ObjectKind { sphere, triangle, cone };
+
+// An object by its kind and its place among that kind's: spheres[index], triangles[index] or
+// cones[index] of the scene.
+struct ObjectRef {
+    ObjectKind kind;
+    int index;
+};
+
+// Which object number `object` is, in a list of `spheres` spheres and `triangles` triangles.
+inline ObjectRef object_ref(int object, int spheres, int triangles)
+{
+    if (object < spheres)
+        return {ObjectKind::sphere, object};
+    if (object - spheres < triangles)
+        return {ObjectKind::triangle, object - spheres};
+    return {ObjectKind::cone, object - spheres - triangles};
+}
+
+// The number of the first object of `kind`, so that object first_of(kind) + i is that kind's i-th.
+inline int first_of(ObjectKind kind, int spheres, int triangles)
+{
+    return kind == ObjectKind::sphere ? 0 : kind == ObjectKind::triangle ? spheres : spheres + triangles;
+}
+
+// The same for a scene with the three arrays (ShapeScene, LitScene).
+template <class Scene>
+ObjectRef object_ref(const Scene& scene, int object)
+{
+    return object_ref(object, static_cast<int>(scene.spheres.size()), static_cast<int>(scene.triangles.size()));
+}
+
+// What a scene keeps beside each kind's array, index for index (a colour, a material), for the
+// object `r` names.
+template <class T>
+const T& per_kind(const ObjectRef& r, const std::vector<T>& of_spheres, const std::vector<T>& of_triangles,
+                  const std::vector<T>& of_cones)
+{
+    switch (r.kind) {
+    case ObjectKind::sphere:
+        return of_spheres[r.index];
+    case ObjectKind::triangle:
+        return of_triangles[r.index];
+    case ObjectKind::cone:
+        break;
+    }
+    return of_cones[r.index];
+}
+
 // Why 1e-6: above the few float roundings (each 6e-8 of 1) in normalising the axis and squaring it.
 constexpr float cone_reach_margin = 1e-6f;
 
@@ -42,29 +95,36 @@ struct Objects {
     const std::vector<bool>* one_sided = nullptr;  // per triangle: seen from its front only (or none)
 
     int size() const { return sphere_count + triangle_count + cone_count; }
+    ObjectRef ref(int k) const { return object_ref(k, sphere_count, triangle_count); }
+    int first(ObjectKind kind) const { return first_of(kind, sphere_count, triangle_count); }
 
     // One counted intersection test of object k: true, with `hit` filled in, when the ray hits it
     // with t strictly inside `range` (and, for a one-sided triangle, from its front).
     bool intersect(int k, const Ray& ray, Interval range, ObjectHit& hit) const
     {
-        if (k < sphere_count) {
-            const std::optional<float> t = hit_sphere(ray, spheres[k], range, tests.sphere);
+        const ObjectRef o = ref(k);
+        switch (o.kind) {
+        case ObjectKind::sphere: {
+            const std::optional<float> t = hit_sphere(ray, spheres[o.index], range, tests.sphere);
             if (!t)
                 return false;
             hit = {*t, k, 0.0f, 0.0f};
             return true;
         }
-        const int tri = k - sphere_count;
-        if (tri < triangle_count) {
-            const std::optional<TriangleHit<float>> h = hit_triangle(ray, triangles[tri], range, tests.triangle);
+        case ObjectKind::triangle: {
+            const Triangle& tri = triangles[o.index];
+            const std::optional<TriangleHit<float>> h = hit_triangle(ray, tri, range, tests.triangle);
             if (!h)
                 return false;
-            if (one_sided && (*one_sided)[tri] && glm::dot(face_normal(triangles[tri]), ray.dir) > 0.0f)
+            if (one_sided && (*one_sided)[o.index] && glm::dot(face_normal(tri), ray.dir) > 0.0f)
                 return false;  // its back
             hit = {h->t, k, h->beta, h->gamma};
             return true;
         }
-        const std::optional<float> t = hit_cone_counted(ray, cones[tri - triangle_count], range);
+        case ObjectKind::cone:
+            break;
+        }
+        const std::optional<float> t = hit_cone_counted(ray, cones[o.index], range);
         if (!t)
             return false;
         hit = {*t, k, 0.0f, 0.0f};
@@ -75,12 +135,13 @@ struct Objects {
     Bounds bounds(int k) const
     {
         Bounds b;
-        if (k < sphere_count) {
-            const vec3 r(spheres[k].radius);
-            b.grow(spheres[k].centre - r);
-            b.grow(spheres[k].centre + r);
-        } else if (k - sphere_count < triangle_count) {
-            const Triangle& t = triangles[k - sphere_count];
+        const ObjectRef o = ref(k);
+        if (o.kind == ObjectKind::sphere) {
+            const vec3 r(spheres[o.index].radius);
+            b.grow(spheres[o.index].centre - r);
+            b.grow(spheres[o.index].centre + r);
+        } else if (o.kind == ObjectKind::triangle) {
+            const Triangle& t = triangles[o.index];
             b.grow(t.a);
             b.grow(t.b);
             b.grow(t.c);
@@ -88,7 +149,7 @@ struct Objects {
             // Each end disc of radius r across the unit axis a reaches r sqrt(1 - a_i^2) along axis i.
             // 1 - a_i^2 carries a few 1e-7 of rounding, which the square root magnifies near 0
             // (an axis almost along i): cone_reach_margin, added first, keeps the box outside.
-            const Cone& c = cones[k - sphere_count - triangle_count];
+            const Cone& c = cones[o.index];
             const vec3 a = glm::normalize(c.apex - c.base);
             const vec3 reach = glm::sqrt(glm::clamp(vec3(1.0f + cone_reach_margin) - a * a, vec3(0.0f), vec3(1.0f)));
             b.grow(c.base - c.base_radius * reach);

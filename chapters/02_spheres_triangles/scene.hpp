@@ -5,9 +5,10 @@
 //
 // The shapes sit in flat arrays of geometry only (what the intersection tests read); what shading
 // reads sits in arrays beside them, index for index. A hit names its object by one number:
-// spheres first, then triangles, then cones (`object_is_sphere`, `triangle_index`, `cone_index`).
+// spheres first, then triangles, then cones (objects.hpp's object_ref says which).
 #pragma once
 
+#include "02_spheres_triangles/objects.hpp"
 #include "02_spheres_triangles/shapes.hpp"
 
 #include <cassert>
@@ -28,17 +29,10 @@ struct ShapeScene {
 
     color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
 
-    bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
-    int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
-    bool object_is_cone(int object) const { return cone_index(object) >= 0; }
-    int cone_index(int object) const { return triangle_index(object) - static_cast<int>(triangles.size()); }
-
     // The colour of the object a hit names.
     const color& albedo_of(int object) const
     {
-        if (object_is_sphere(object))
-            return sphere_albedo[object];
-        return object_is_cone(object) ? cone_albedo[cone_index(object)] : triangle_albedo[triangle_index(object)];
+        return per_kind(object_ref(*this, object), sphere_albedo, triangle_albedo, cone_albedo);
     }
 
     void add_sphere(const Sphere& sphere, const color& albedo)

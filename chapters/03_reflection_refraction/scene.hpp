@@ -50,10 +50,7 @@ struct WhittedScene {
     // The material of the object a hit names (Hit::object: spheres first, then triangles, then cones).
     const Material& material(int object) const
     {
-        if (shapes.object_is_sphere(object))
-            return sphere_materials[object];
-        return shapes.object_is_cone(object) ? cone_materials[shapes.cone_index(object)]
-                                             : triangle_materials[shapes.triangle_index(object)];
+        return per_kind(object_ref(shapes, object), sphere_materials, triangle_materials, cone_materials);
     }
 
     // The diffuse colour of the object at point p: its albedo, or a checker square's colour.

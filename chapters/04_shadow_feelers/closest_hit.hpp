@@ -60,21 +60,25 @@ inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Int
     ObjectHit h;
     if (!query_of(scene).closest(ray, range, objects_of(scene, lit_tests, one_sided), h))
         return std::nullopt;
-    if (scene.object_is_sphere(h.object)) {
-        const Sphere& sphere = scene.spheres[h.object];
+    const ObjectRef o = object_ref(scene, h.object);
+    switch (o.kind) {
+    case ObjectKind::sphere: {
+        const Sphere& sphere = scene.spheres[o.index];
         const point3 p = sphere_surface_point(sphere, ray.at(h.t));
         return Hit{h.t, p, sphere_normal(sphere, p), h.object};
     }
-    if (scene.object_is_cone(h.object)) {
-        const ConeSurfacePoint on = cone_surface(scene.cones[scene.cone_index(h.object)], ray.at(h.t));
-        return Hit{h.t, on.p, on.n, h.object};
+    case ObjectKind::triangle: {
+        const Triangle& tri = scene.triangles[o.index];
+        const TriangleHit<float> on{h.t, h.beta, h.gamma};
+        const vec3 ng = face_normal(tri);
+        const CornerNormals* smooth = scene.smooth_normals(o.index);
+        return Hit{h.t, triangle_surface_point(tri, on), smooth ? interpolated_normal(*smooth, on) : ng, h.object, ng};
     }
-    const int k = scene.triangle_index(h.object);
-    const Triangle& tri = scene.triangles[k];
-    const TriangleHit<float> on{h.t, h.beta, h.gamma};
-    const vec3 ng = face_normal(tri);
-    const CornerNormals* smooth = scene.smooth_normals(k);
-    return Hit{h.t, triangle_surface_point(tri, on), smooth ? interpolated_normal(*smooth, on) : ng, h.object, ng};
+    case ObjectKind::cone:
+        break;
+    }
+    const ConeSurfacePoint on = cone_surface(scene.cones[o.index], ray.at(h.t));
+    return Hit{h.t, on.p, on.n, h.object};
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 // spheres first, then triangles, then cones, as in chapter 02.
 #pragma once
 
+#include "02_spheres_triangles/objects.hpp"
 #include "02_spheres_triangles/shapes.hpp"
 
 #include <cassert>
@@ -56,17 +57,10 @@ struct LitScene {
     // over these arrays (it does not own them, nor they it).
     const Accelerator* accelerator = nullptr;
 
-    bool object_is_sphere(int object) const { return object < static_cast<int>(spheres.size()); }
-    int triangle_index(int object) const { return object - static_cast<int>(spheres.size()); }
-    bool object_is_cone(int object) const { return cone_index(object) >= 0; }
-    int cone_index(int object) const { return triangle_index(object) - static_cast<int>(triangles.size()); }
-
     // The index into `materials` of the object a hit names.
     int material_index(int object) const
     {
-        if (object_is_sphere(object))
-            return sphere_material[object];
-        return object_is_cone(object) ? cone_material[cone_index(object)] : triangle_material[triangle_index(object)];
+        return per_kind(object_ref(*this, object), sphere_material, triangle_material, cone_material);
     }
 
     const PhongMaterial& material_of(int object) const { return materials[material_index(object)]; }

@@ -43,7 +43,7 @@ namespace {
 void cone_bounds(const RTCBoundsFunctionArguments* args)
 {
     const Objects& o = *static_cast<const Objects*>(args->geometryUserPtr);
-    const Bounds b = o.bounds(o.sphere_count + o.triangle_count + static_cast<int>(args->primID));
+    const Bounds b = o.bounds(o.first(ObjectKind::cone) + static_cast<int>(args->primID));
     *args->bounds_o = {b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
 }
 
@@ -60,7 +60,7 @@ void cone_intersect(const RTCIntersectFunctionNArguments* args)
     const Objects& o = *static_cast<const Objects*>(args->geometryUserPtr);
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     ObjectHit h;
-    const int k = o.sphere_count + o.triangle_count + static_cast<int>(args->primID);
+    const int k = o.first(ObjectKind::cone) + static_cast<int>(args->primID);
     if (!o.intersect(k, ray_of(ray, args->N), {RTCRayN_tnear(ray, args->N, 0), RTCRayN_tfar(ray, args->N, 0)}, h))
         return;
     RTCRayN_tfar(ray, args->N, 0) = h.t;
@@ -76,7 +76,7 @@ void cone_occluded(const RTCOccludedFunctionNArguments* args)
         return;
     const Objects& o = *static_cast<const Objects*>(args->geometryUserPtr);
     ObjectHit h;
-    const int k = o.sphere_count + o.triangle_count + static_cast<int>(args->primID);
+    const int k = o.first(ObjectKind::cone) + static_cast<int>(args->primID);
     if (o.intersect(k, ray_of(args->ray, args->N), {RTCRayN_tnear(args->ray, args->N, 0), RTCRayN_tfar(args->ray, args->N, 0)}, h))
         RTCRayN_tfar(args->ray, args->N, 0) = -std::numeric_limits<float>::infinity();
 }
@@ -172,9 +172,10 @@ bool EmbreeAccel::closest(const Ray& ray, Interval range, const Objects& objects
         return false;
     const int prim = static_cast<int>(rh.hit.primID);
     hit.t = rh.ray.tfar;
-    hit.object = rh.hit.geomID == sphere_geometry     ? prim
-                 : rh.hit.geomID == triangle_geometry ? objects.sphere_count + prim
-                                                      : objects.sphere_count + objects.triangle_count + prim;
+    const ObjectKind kind = rh.hit.geomID == sphere_geometry     ? ObjectKind::sphere
+                            : rh.hit.geomID == triangle_geometry ? ObjectKind::triangle
+                                                                 : ObjectKind::cone;
+    hit.object = objects.first(kind) + prim;
     return true;
 }
 

@@ -184,9 +184,10 @@ TEST_CASE("a scene file's objects keep their order, spheres then triangles then 
     REQUIRE(shapes.triangles.size() == 1);
     REQUIRE(shapes.cones.size() == 1);
     // Object 0 the sphere, 1 the triangle, 2 the cone.
-    CHECK(shapes.object_is_sphere(0));
-    CHECK_FALSE(shapes.object_is_cone(1));
-    CHECK(shapes.object_is_cone(2));
+    CHECK(object_ref(shapes, 0).kind == ObjectKind::sphere);
+    CHECK(object_ref(shapes, 1).kind == ObjectKind::triangle);
+    CHECK(object_ref(shapes, 2).kind == ObjectKind::cone);
+    CHECK(object_ref(shapes, 2).index == 0);
     CHECK(shapes.albedo_of(0) == nff.materials[0].rgb);
     CHECK(shapes.albedo_of(1) == nff.materials[1].rgb);
     CHECK(shapes.albedo_of(2) == nff.materials[2].rgb);
