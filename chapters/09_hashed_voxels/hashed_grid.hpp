@@ -143,9 +143,38 @@ private:
         return true;
     }
 
+    // The build in four phases: the grid's shape (chapter 07's plan), the references sorted into
+    // one HashedCell per occupied cell, the cells filed by bucket, and the occupancy bits.
     void build(const Objects& objects, float lambda, std::uint32_t table_size)
     {
         const Timer timer;
+        const GridPlan plan = plan_shape(objects, lambda);
+        shape_ = plan.shape;
+        const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references);
+        const long long collisions = file_by_bucket(by_address, table_size);
+        set_bits(by_address);
+
+        const HashTable& t = table_;
+        stats_.objects = objects.size();
+        stats_.resolution = shape_.n;
+        stats_.lambda = plan.lambda;
+        stats_.cells = static_cast<long long>(shape_.n.x) * shape_.n.y * shape_.n.z;
+        stats_.occupied = static_cast<long long>(by_address.size());
+        stats_.references = static_cast<long long>(t.object_index.size());
+        stats_.M = t.M;
+        stats_.collisions = collisions;
+        stats_.table_bytes = t.bucket_start.size() * sizeof(std::uint32_t) + t.cells.size() * sizeof(HashedCell) +
+                             t.object_index.size() * sizeof(std::uint32_t);
+        stats_.bits_bytes = bits_.words.size() * sizeof(std::uint64_t);
+        stats_.bytes = stats_.table_bytes + stats_.bits_bytes;
+        stats_.build_seconds = timer.seconds();
+    }
+
+    // The grid's shape and each object's cells, lambda cells per object up to
+    // max_hashed_cells_per_axis: chapter 07's plan, whose references are counted before anything is
+    // allocated, and which lowers lambda where such a grid would not pay (grid_pays).
+    static GridPlan plan_shape(const Objects& objects, float lambda)
+    {
         const int count = objects.size();
         Bounds scene;
         for (int k = 0; k < count; ++k)
@@ -153,24 +182,25 @@ private:
         const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
         if (static_cast<long long>(asked.x) * asked.y * asked.z >= (1LL << 31))
             throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
-                             std::to_string(asked.z) + " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
+                             std::to_string(asked.z) +
+                             " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
         const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
         std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
         std::iota(all.begin(), all.end(), 0u);
-        // The references are counted before anything is allocated; where such a grid would not pay
-        // (chapter 07's grid_pays), lambda is lowered (plan_grid).
         const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_hashed_cells_per_axis);
         say_lambda_lowered("the hashed grid", plan, lambda, count);
-        shape_ = plan.shape;
-        const cell3 n = shape_.n;
-        const long long cells = static_cast<long long>(n.x) * n.y * n.z;
-        const std::vector<CellRange>& ranges = plan.ranges;
-        const long long references = plan.references;
+        return plan;
+    }
 
-        // Every (cell, object) reference as one 64-bit key, cell above object, sorted.
+    // Every (cell, object) reference as one 64-bit key, cell above object, sorted; then one
+    // HashedCell per occupied cell, in increasing address, its objects (table_.object_index) in
+    // increasing number.
+    std::vector<HashedCell> sort_references(const std::vector<CellRange>& ranges, long long references)
+    {
+        const long long cells = static_cast<long long>(shape_.n.x) * shape_.n.y * shape_.n.z;
         std::vector<std::uint64_t> keys;
         keys.reserve(static_cast<std::size_t>(references));
-        for (int k = 0; k < count; ++k)
+        for (std::size_t k = 0; k < ranges.size(); ++k)
             for (int i = ranges[k].first.x; i <= ranges[k].last.x; ++i)
                 for (int j = ranges[k].first.y; j <= ranges[k].last.y; ++j)
                     for (int l = ranges[k].first.z; l <= ranges[k].last.z; ++l) {
@@ -180,7 +210,6 @@ private:
                     }
         std::sort(keys.begin(), keys.end());
 
-        // One HashedCell per occupied cell, its objects in increasing number.
         std::vector<HashedCell> by_address;
         table_.object_index.resize(keys.size());
         for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -190,40 +219,40 @@ private:
                 by_address.push_back({p, static_cast<std::uint32_t>(i), 0});
             ++by_address.back().count;
         }
-        keys = {};
+        return by_address;
+    }
 
-        // Filed by bucket (a counting sort, stable: by increasing address within a bucket).
-        table_.M = table_size > 0 ? table_size : prime_at_least(2 * std::max<std::uint64_t>(1, by_address.size()));
-        table_.bucket_start.assign(static_cast<std::size_t>(table_.M) + 1, 0);
+    // The cells filed by bucket, cell p in bucket p mod M (a counting sort, stable: by increasing
+    // address within a bucket), M = table_size or, for 0, the least prime at least twice the
+    // occupied cells. Returns the collisions: cells filed in a bucket that already held one.
+    long long file_by_bucket(const std::vector<HashedCell>& by_address, std::uint32_t table_size)
+    {
+        HashTable& t = table_;
+        t.M = table_size > 0 ? table_size : prime_at_least(2 * std::max<std::uint64_t>(1, by_address.size()));
+        t.bucket_start.assign(static_cast<std::size_t>(t.M) + 1, 0);
         for (const HashedCell& c : by_address)
-            ++table_.bucket_start[static_cast<std::uint32_t>(c.p) % table_.M + 1];
+            ++t.bucket_start[static_cast<std::uint32_t>(c.p) % t.M + 1];
         long long collisions = 0;
-        for (std::uint32_t b = 0; b < table_.M; ++b) {
-            collisions += std::max<long long>(0, static_cast<long long>(table_.bucket_start[b + 1]) - 1);
-            table_.bucket_start[b + 1] += table_.bucket_start[b];
+        for (std::uint32_t b = 0; b < t.M; ++b) {
+            collisions += std::max<long long>(0, static_cast<long long>(t.bucket_start[b + 1]) - 1);
+            t.bucket_start[b + 1] += t.bucket_start[b];
         }
-        table_.cells.resize(by_address.size());
-        std::vector<std::uint32_t> fill(table_.bucket_start.begin(), table_.bucket_start.end() - 1);
+        t.cells.resize(by_address.size());
+        std::vector<std::uint32_t> fill(t.bucket_start.begin(), t.bucket_start.end() - 1);
         for (const HashedCell& c : by_address)
-            table_.cells[fill[static_cast<std::uint32_t>(c.p) % table_.M]++] = c;
+            t.cells[fill[static_cast<std::uint32_t>(c.p) % t.M]++] = c;
+        return collisions;
+    }
 
+    // One bit per cell of the grid, set for the occupied ones.
+    void set_bits(const std::vector<HashedCell>& by_address)
+    {
+        const long long cells = static_cast<long long>(shape_.n.x) * shape_.n.y * shape_.n.z;
         bits_.words.assign(static_cast<std::size_t>((cells + 63) / 64), 0);
-        for (const HashedCell& c : by_address)
-            bits_.words[static_cast<std::uint32_t>(c.p) >> 6] |= std::uint64_t{1} << (static_cast<std::uint32_t>(c.p) & 63u);
-
-        stats_.objects = count;
-        stats_.resolution = n;
-        stats_.lambda = plan.lambda;
-        stats_.cells = cells;
-        stats_.occupied = static_cast<long long>(by_address.size());
-        stats_.references = static_cast<long long>(table_.object_index.size());
-        stats_.M = table_.M;
-        stats_.collisions = collisions;
-        stats_.table_bytes = table_.bucket_start.size() * sizeof(std::uint32_t) + table_.cells.size() * sizeof(HashedCell) +
-                             table_.object_index.size() * sizeof(std::uint32_t);
-        stats_.bits_bytes = bits_.words.size() * sizeof(std::uint64_t);
-        stats_.bytes = stats_.table_bytes + stats_.bits_bytes;
-        stats_.build_seconds = timer.seconds();
+        for (const HashedCell& c : by_address) {
+            const auto p = static_cast<std::uint32_t>(c.p);
+            bits_.words[p >> 6] |= std::uint64_t{1} << (p & 63u);
+        }
     }
 
     GridShape shape_;
