@@ -22,10 +22,11 @@
 
 namespace rt {
 
-// A node of the tree, 32 bytes, two to a cache line, all of them in one flat array. A leaf
-// (count > 0) holds object_index[first .. first + count); an inner node (count == 0) has its first
-// child right after it (node + 1) and its second child at `first`, and was split along `axis`.
-struct BvhNode {
+// A node of the tree, 32 bytes, two to a cache line (aligned to 32, so no node straddles two), all
+// of them in one flat array. A leaf (count > 0) holds object_index[first .. first + count); an
+// inner node (count == 0) has its first child right after it (node + 1) and its second child at
+// `first`, and was split along `axis`.
+struct alignas(32) BvhNode {
     point3 min;
     std::uint32_t first;
     point3 max;

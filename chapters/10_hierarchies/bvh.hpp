@@ -49,13 +49,13 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        return bvh_query(bvh_, ray, range, objects, false, hit);
+        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/false, hit);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
         ObjectHit hit;
-        return bvh_query(bvh_, ray, range, objects, true, hit);
+        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/true, hit);
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
