@@ -11,8 +11,8 @@
 
 #include "01_ray_casting/01_ray_casting.hpp"
 #include "02_spheres_triangles/mesh_scene.hpp"
-#include "04_shadow_feelers/closest_hit.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "common/render.hpp"
 
 #include <array>
@@ -62,15 +62,6 @@ inline LitScene figure_scene(float scale = 1.0f)
     // One point light, up and to the left, in front: the shadows fall back and to the right.
     scene.lights.push_back({s * point3(-4.5f, 7.0f, 3.5f), color(50.0f * s * s)});
     return scene;
-}
-
-// The slides' Render(ray): the nearest object's colour, or the background. A primary ray starts at
-// the eye, on no surface, so it accepts any t > 0.
-inline color radiance(const LitScene& scene, const Ray& ray, const FeelerSettings& feelers)
-{
-    count(Counter::primary_rays);
-    const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
-    return hit ? shade(scene, ray, *hit, feelers) : scene.background;
 }
 
 inline Image render_figure(const RenderSettings& settings, const FeelerSettings& feelers = {}, float scale = 1.0f)

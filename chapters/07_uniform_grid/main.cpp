@@ -4,14 +4,14 @@
 // each pixel cost. --sweep measures the trade: the grid's density lambda against build time,
 // bytes, tests, cells and render time, and brute force against the grid as the scene grows.
 #include "07_uniform_grid/figure.hpp"
-#include "07_uniform_grid/measure.hpp"
-#include "common/lesson_table.hpp"
 #include "common/cli.hpp"
+#include "common/lesson_table.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/random.hpp"
 #include "common/scene_file.hpp"
 #include "common/trade.hpp"
+#include "programs/measure.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -219,15 +219,15 @@ void sweep(const Options& o, const CommandLine& cli)
     what << "Brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
     LessonTable growth = comparison_table("07.growth", what.str(), settings, o.sweep.repeat);
     for (int depth = 1; depth <= 8; ++depth)
-        compare_on(ch07::generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
+        compare_on(generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
                    growth);
     std::ofstream scenes_csv = open_csv(csv_beside(o.sweep.csv, "_scenes"), comparison_header);
     LessonTable scenes =
         comparison_table("07.scenes", "The kit's generated scenes near 10k objects", settings, o.sweep.repeat);
-    compare_on(ch07::generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv, scenes);
-    compare_on(ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv, scenes);
-    compare_on(ch07::generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv, scenes);
-    compare_on(ch07::generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv, scenes);
+    compare_on(generated_scene(write_mountain, 6, "mountain 6"), o, settings, scenes_csv, scenes);
+    compare_on(generated_scene(write_sphereflake, 4, "sphereflake 4"), o, settings, scenes_csv, scenes);
+    compare_on(generated_scene(write_pyramid, 5, "pyramid 5"), o, settings, scenes_csv, scenes);
+    compare_on(generated_scene(write_tree, 7, "tree 7"), o, settings, scenes_csv, scenes);
     const LessonTable lambda = sweep_lambda(o, sweep_settings(o.common, cli, 320, 180));
     write_lesson_tables(tables_beside(o.sweep.csv), {growth, scenes, lambda, measure_drift(1000)}, std::cout);
     std::cout << "\nwrote " << o.sweep.csv << ", " << csv_beside(o.sweep.csv, "_n") << ", "

@@ -13,7 +13,7 @@ namespace rt::ch08 {
 
 constexpr int figure_sticks_depth = 5;  // 8000 sticks
 
-inline NffScene figure_scene() { return ch07::generated_scene(write_sticks, figure_sticks_depth, "sticks, depth 5"); }
+inline NffScene figure_scene() { return generated_scene(write_sticks, figure_sticks_depth, "sticks, depth 5"); }
 
 // The accelerator by name (--accel, --mailbox): brute force (none), or the grid with or without
 // mailboxes.
@@ -29,7 +29,7 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, bo
 inline Image render_through_mailboxes(const RenderSettings& settings, float lambda = ch07::default_lambda,
                                       CostMap* cost = nullptr)
 {
-    return ch07::render_figure_through(figure_scene(), settings,
+    return render_figure_through(figure_scene(), settings,
                                        [&](const Objects& o) { return std::make_unique<MailboxGrid>(o, lambda); }, cost);
 }
 

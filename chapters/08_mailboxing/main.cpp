@@ -5,12 +5,12 @@
 // kind (primary, shadow, secondary), on three scenes.
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
-#include "07_uniform_grid/measure.hpp"
 #include "08_mailboxing/figure.hpp"
 #include "common/cli.hpp"
-#include "common/output.hpp"
 #include "common/lesson_table.hpp"
+#include "common/output.hpp"
 #include "common/trade.hpp"
+#include "programs/measure.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -164,8 +164,8 @@ void sweep(const Options& o, const CommandLine& cli)
                           " primary rays, their shadow feelers and mirror rays), release build, 1 thread, medians of " +
                           std::to_string(o.sweep.repeat) + " interleaved runs; the answers of every ray identical."};
     const std::vector<NffScene> scenes = {ch08::figure_scene(),
-                                          ch07::generated_scene(write_mountain, 7, "mountain, depth 7"),
-                                          ch07::generated_scene(write_sphereflake, 4, "sphereflake, depth 4")};
+                                          generated_scene(write_mountain, 7, "mountain, depth 7"),
+                                          generated_scene(write_sphereflake, 4, "sphereflake, depth 4")};
     for (const NffScene& nff : scenes) {
         const SceneRender file = scene_render(nff, settings);
         LitScene scene = lit_scene(file.scene);

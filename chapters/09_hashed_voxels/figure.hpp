@@ -21,7 +21,7 @@ constexpr float default_hashed_lambda = 256.0f;
 
 inline NffScene figure_scene()
 {
-    return ch07::generated_scene(write_stadium, figure_stadium_depth, "teapot in a stadium, depth 5");
+    return generated_scene(write_stadium, figure_stadium_depth, "teapot in a stadium, depth 5");
 }
 
 // The accelerator by name (--accel): brute force (none), the dense grid or the hashed one.
@@ -39,7 +39,7 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
 inline Image render_through_hashed(const RenderSettings& settings, float lambda = default_hashed_lambda,
                                    CostMap* cost = nullptr)
 {
-    return ch07::render_figure_through(figure_scene(), settings,
+    return render_figure_through(figure_scene(), settings,
                                        [&](const Objects& o) { return std::make_unique<HashedGrid>(o, lambda); }, cost);
 }
 

@@ -3,12 +3,12 @@
 // or the hashed one (--accel). --sweep measures the trade: the table size M against collisions,
 // bytes and time; the hashed grid against the dense one at equal resolution and past the dense
 // grid's limit.
-#include "07_uniform_grid/measure.hpp"
 #include "09_hashed_voxels/figure.hpp"
 #include "common/cli.hpp"
-#include "common/output.hpp"
 #include "common/lesson_table.hpp"
+#include "common/output.hpp"
 #include "common/trade.hpp"
+#include "programs/measure.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -35,7 +35,7 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
 // The figure's scene through the BVH; with `cost`, what each pixel cost.
 inline Image render_through_bvh(const RenderSettings& settings, const BvhSettings& bvh = {}, CostMap* cost = nullptr)
 {
-    return ch07::render_figure_through(figure_scene(), settings,
+    return render_figure_through(figure_scene(), settings,
                                        [&](const Objects& o) { return std::make_unique<BvhAccel>(o, bvh); }, cost);
 }
 

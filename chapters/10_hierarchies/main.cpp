@@ -4,12 +4,12 @@
 // size and depth limit against build time, bytes, nodes per ray and render time; SAH against a
 // median split; the hierarchy of grids' leaf size and depth; and every structure side by side on
 // the kit's generated scenes.
-#include "07_uniform_grid/measure.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "common/cli.hpp"
-#include "common/output.hpp"
 #include "common/lesson_table.hpp"
+#include "common/output.hpp"
 #include "common/trade.hpp"
+#include "programs/measure.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -151,12 +151,12 @@ void sweep(const Options& o, const CommandLine& cli)
                     {},
                     "Every structure side by side, " + how + "; every image identical to the BVH's."};
     const std::vector<NffScene> scenes = {
-        ch07::generated_scene(write_stadium, 5, "teapot in a stadium 5"),
-        ch07::generated_scene(write_sticks, 5, "sticks 5"),
-        ch07::generated_scene(write_mountain, 7, "mountain 7"),
-        ch07::generated_scene(write_sphereflake, 4, "sphereflake 4"),
-        ch07::generated_scene(write_pyramid, 7, "pyramid 7"),
-        ch07::generated_scene(write_mountain, 10, "mountain 10"),
+        generated_scene(write_stadium, 5, "teapot in a stadium 5"),
+        generated_scene(write_sticks, 5, "sticks 5"),
+        generated_scene(write_mountain, 7, "mountain 7"),
+        generated_scene(write_sphereflake, 4, "sphereflake 4"),
+        generated_scene(write_pyramid, 7, "pyramid 7"),
+        generated_scene(write_mountain, 10, "mountain 10"),
     };
     for (const NffScene& nff : scenes) {
         std::vector<std::uint8_t> same;

@@ -8,7 +8,6 @@
 // Writes, into --out-dir: results.csv (closest hits), any_hit.csv (the same for any-hit queries),
 // results.md (the tables), scaling.csv (the BVH's time per ray against N) and, with --classic,
 // classic.csv (the classic SPD rules at 513 x 513 through the BVH).
-#include "07_uniform_grid/measure.hpp"
 #include "08_mailboxing/figure.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "benchmark/embree_accel.hpp"
@@ -17,6 +16,7 @@
 #include "common/output.hpp"
 #include "common/parallel.hpp"
 #include "common/trade.hpp"
+#include "programs/measure.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -197,15 +197,15 @@ std::vector<Scene> scenes(const Options& o)
     if (!o.scene.empty())
         return {{read_nff(o.scene), std::filesystem::path(o.scene).filename().string()}};
     if (o.tiny)
-        return {{ch07::generated_scene(write_sphereflake, 1, "sphereflake 1"), "sphereflake 1"}};
+        return {{generated_scene(write_sphereflake, 1, "sphereflake 1"), "sphereflake 1"}};
     std::cerr << "generating the six scenes (the mountain of 2 million triangles takes a while)...\n";
     return {
-        {ch07::generated_scene(write_sphereflake, 3, "sphereflake 3"), "sphereflake 3"},
-        {ch07::generated_scene(write_tree, 6, "tree 6"), "tree 6"},
-        {ch07::generated_scene(write_pyramid, 6, "pyramid 6"), "pyramid 6"},
+        {generated_scene(write_sphereflake, 3, "sphereflake 3"), "sphereflake 3"},
+        {generated_scene(write_tree, 6, "tree 6"), "tree 6"},
+        {generated_scene(write_pyramid, 6, "pyramid 6"), "pyramid 6"},
         {ch10::figure_scene(), "teapot in a stadium 5"},
-        {ch07::generated_scene(write_mountain, 7, "mountain 7"), "mountain 7"},
-        {ch07::generated_scene(write_mountain, 10, "mountain 10"), "mountain 10 (dense mesh)"},
+        {generated_scene(write_mountain, 7, "mountain 7"), "mountain 7"},
+        {generated_scene(write_mountain, 10, "mountain 10"), "mountain 10 (dense mesh)"},
     };
 }
 
@@ -402,7 +402,7 @@ void scaling(const Options& o, std::ostream& md)
     md << "\n**The BVH against N** (mountains of 2 x 4^d triangles, primary rays, 1 thread)\n\n"
        << "| objects | build ms | ns/ray | nodes/ray | tests/ray |\n|---|---|---|---|---|\n";
     for (int depth = 3; depth <= (o.tiny ? 3 : 10); ++depth) {
-        const NffScene nff = ch07::generated_scene(write_mountain, depth, "mountain");
+        const NffScene nff = generated_scene(write_mountain, depth, "mountain");
         RenderSettings settings;
         settings.width = o.width;
         settings.height = o.height;

@@ -1,11 +1,11 @@
 // How the sweeps of chapters 07-10 measure a structure on a scene: its build (the median of
-// several, after one untimed), one counted render (its picture, to hold against brute force's, and its work per ray),
-// and the median time of several more renders. One thread unless asked, since a single thread's
+// several, after one untimed), one counted render (its picture, to hold against brute force's,
+// and its work per ray), and the median time of several more renders. One thread unless asked, since a single thread's
 // times vary least from run to run.
 #pragma once
 
-#include "07_uniform_grid/scene_program.hpp"
 #include "common/trade.hpp"
+#include "programs/scene_program.hpp"
 
 #include <cstdint>
 #include <functional>

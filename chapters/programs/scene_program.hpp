@@ -3,13 +3,18 @@
 // shading and shadow feelers or by the classic NFF rules (--classic), through the accelerator its
 // options name; --heatmap writes the heat map, --stats adds the structure's own lines. Each
 // chapter says what its figure is, how to build its accelerators and what to print of them.
+//
+// chapters/programs/ holds what the programs of chapters 07-10 and the benchmark share (this file,
+// and measure.hpp for their sweeps): given code of no one chapter, built on chapter 04's shading
+// (04_shadow_feelers/radiance.hpp) and chapter 02's scene query.
 #pragma once
 
 #include "04_shadow_feelers/classic.hpp"
-#include "04_shadow_feelers/figure.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "04_shadow_feelers/nff_scene.hpp"
 #include "common/cli.hpp"
 #include "common/heatmap.hpp"
+#include "common/nff.hpp"
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
@@ -19,12 +24,34 @@
 #include <iostream>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace rt {
+
+// One of the kit's generated scenes, read back from the NFF text its generator writes.
+inline NffScene generated_scene(void (*write)(std::ostream&, int), int depth, const std::string& name)
+{
+    std::stringstream text;
+    write(text, depth);
+    return parse_nff(text, name);
+}
+
+// A generated figure's scene through the accelerator `make` builds from its objects, with chapter
+// 04's shading and feelers; with `cost`, what each pixel cost. Chapters 07-10 render their
+// figures (and the picture tests theirs) through it.
+template <class Make>
+Image render_figure_through(const NffScene& nff, const RenderSettings& settings, const Make& make, CostMap* cost)
+{
+    const SceneRender file = scene_render(nff, settings);
+    LitScene scene = lit_scene(file.scene);
+    const std::unique_ptr<Accelerator> accel = make(objects_of(scene, lit_tests));
+    scene.accelerator = accel.get();
+    return render_lit(file, scene, FeelerSettings{}, cost);
+}
 
 // The options the scene programs share.
 struct SceneOptions {
@@ -93,17 +120,6 @@ inline void check_scene_program_options(const SceneProgram& program, const Scene
 {
     heat_named(program, o.heat_of);
     classic::check_classic_options(o.classic, o.scene, common.spp, o.two_sided);
-}
-
-// Chapter 04's render of a scene file (its shading with feelers), through whatever accelerator the
-// scene holds; with `cost`, also what each pixel cost.
-inline Image render_lit(const SceneRender& file, const LitScene& scene, const FeelerSettings& feelers,
-                        CostMap* cost = nullptr)
-{
-    const auto radiance = [&](float x, float y, Rng&) {
-        return ch04::radiance(scene, file.eye_ray(primary_ray(file.camera, x, y)), feelers);
-    };
-    return cost ? render(file.settings, with_cost(*cost, radiance)) : render(file.settings, radiance);
 }
 
 // The figure's comparison: one render per compared structure, each with its heat map. Rendered

@@ -25,10 +25,10 @@ GRADED_TEST("the grid answers every ray as brute force does, object and t, on th
 
 GRADED_TEST("the grid answers every ray as brute force does on the generated sphereflake, pyramid, tree and mountain", "07.A", 4)
 {
-    check_scene(grid, ch07::generated_scene(write_sphereflake, 2, "sphereflake 2"), 800);
-    check_scene(grid, ch07::generated_scene(write_pyramid, 3, "pyramid 3"), 800);
-    check_scene(grid, ch07::generated_scene(write_tree, 3, "tree 3"), 800);
-    check_scene(grid, ch07::generated_scene(write_mountain, 4, "mountain 4"), 800);
+    check_scene(grid, generated_scene(write_sphereflake, 2, "sphereflake 2"), 800);
+    check_scene(grid, generated_scene(write_pyramid, 3, "pyramid 3"), 800);
+    check_scene(grid, generated_scene(write_tree, 3, "tree 3"), 800);
+    check_scene(grid, generated_scene(write_mountain, 4, "mountain 4"), 800);
 }
 
 STABILITY_TEST("the grid answers as brute force does on ties, a huge floor under tiny objects, and far from the origin", "07.A", 4)

@@ -26,9 +26,9 @@ GRADED_TEST("the grid with mailboxes answers every ray as brute force does, on t
     for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
         if (entry.path().extension() == ".nff")
             check_scene(mailboxed, read_nff(entry.path().string()), 800);
-    check_scene(mailboxed, ch07::generated_scene(write_sticks, 1, "sticks 1"), 800);
-    check_scene(mailboxed, ch07::generated_scene(write_tree, 3, "tree 3"), 500);
-    check_scene(mailboxed, ch07::generated_scene(write_mountain, 4, "mountain 4"), 500);
+    check_scene(mailboxed, generated_scene(write_sticks, 1, "sticks 1"), 800);
+    check_scene(mailboxed, generated_scene(write_tree, 3, "tree 3"), 500);
+    check_scene(mailboxed, generated_scene(write_mountain, 4, "mountain 4"), 500);
 }
 
 STABILITY_TEST("the grid with mailboxes answers as brute force does on ties, a huge floor and far from the origin", "08.A", 3)
@@ -38,7 +38,7 @@ STABILITY_TEST("the grid with mailboxes answers as brute force does on ties, a h
 
 GRADED_TEST("with mailboxes no object is tested twice by one ray: every cell reference is a test or an answer", "08.A", 4)
 {
-    const NffScene nff = ch07::generated_scene(write_sticks, 1, "sticks 1");
+    const NffScene nff = generated_scene(write_sticks, 1, "sticks 1");
     const LitScene scene = lit_scene(nff);
     const Objects objects = objects_of(scene, lit_tests);
     const UniformGrid plain(objects, 8.0f);
@@ -70,7 +70,7 @@ GRADED_TEST("with mailboxes no object is tested twice by one ray: every cell ref
 
 GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature counter's wrap", "08.A", 4)
 {
-    const NffScene nff = ch07::generated_scene(write_sticks, 1, "sticks 1");
+    const NffScene nff = generated_scene(write_sticks, 1, "sticks 1");
     const LitScene scene = lit_scene(nff);
     const Objects objects = objects_of(scene, lit_tests);
     const MailboxGrid grid(objects, 8.0f);

@@ -22,8 +22,8 @@ GRADED_TEST("the hashed grid answers every ray as brute force does, on the kit's
     for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
         if (entry.path().extension() == ".nff")
             check_scene(hashed, read_nff(entry.path().string()), 600);
-    check_scene(hashed, ch07::generated_scene(write_stadium, 2, "stadium 2"), 600);
-    check_scene(hashed, ch07::generated_scene(write_mountain, 4, "mountain 4"), 400);
+    check_scene(hashed, generated_scene(write_stadium, 2, "stadium 2"), 600);
+    check_scene(hashed, generated_scene(write_mountain, 4, "mountain 4"), 400);
 }
 
 STABILITY_TEST("the hashed grid answers as brute force does on ties, a huge floor and far from the origin", "09.A", 3)

@@ -125,9 +125,9 @@ GRADED_TEST("the hierarchy of grids answers every ray as brute force does, on th
     for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
         if (entry.path().extension() == ".nff")
             check_scene(hgrid, read_nff(entry.path().string()), 400);
-    check_scene(hgrid, ch07::generated_scene(write_stadium, 2, "stadium 2"), 600);
-    check_scene(hgrid, ch07::generated_scene(write_sticks, 1, "sticks 1"), 600);
-    check_scene(hgrid, ch07::generated_scene(write_tree, 3, "tree 3"), 400);
+    check_scene(hgrid, generated_scene(write_stadium, 2, "stadium 2"), 600);
+    check_scene(hgrid, generated_scene(write_sticks, 1, "sticks 1"), 600);
+    check_scene(hgrid, generated_scene(write_tree, 3, "tree 3"), 400);
 }
 
 STABILITY_TEST("the hierarchy of grids answers as brute force does on ties, a huge floor and far from the origin", "10.5",
@@ -138,7 +138,7 @@ STABILITY_TEST("the hierarchy of grids answers as brute force does on ties, a hu
 
 TEST_CASE("the hierarchy of grids subdivides only crowded cells, and no deeper than its limit")
 {
-    const NffScene nff = ch07::generated_scene(write_stadium, 2, "stadium 2");
+    const NffScene nff = generated_scene(write_stadium, 2, "stadium 2");
     const LitScene scene = lit_scene(nff);
     const Objects objs = objects_of(scene, lit_tests);
     for (const int depth : {0, 1, 3}) {

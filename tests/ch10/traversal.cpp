@@ -1,4 +1,5 @@
 // EXERCISE 10.4: the traversal, on a tree built by hand and against brute force on seeded rays.
+#include "02_spheres_triangles/mesh_scene.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "tests/ch07/agreement.hpp"
 
@@ -90,9 +91,9 @@ GRADED_TEST("the BVH answers every ray as brute force does, on the kit's scenes 
             check_scene(bvh, read_nff(entry.path().string()), 600);
             check_scene(median, read_nff(entry.path().string()), 300);
         }
-    check_scene(bvh, ch07::generated_scene(write_stadium, 2, "stadium 2"), 600);
-    check_scene(bvh, ch07::generated_scene(write_sticks, 1, "sticks 1"), 600);
-    check_scene(bvh, ch07::generated_scene(write_tree, 3, "tree 3"), 400);
+    check_scene(bvh, generated_scene(write_stadium, 2, "stadium 2"), 600);
+    check_scene(bvh, generated_scene(write_sticks, 1, "sticks 1"), 600);
+    check_scene(bvh, generated_scene(write_tree, 3, "tree 3"), 400);
 }
 
 STABILITY_TEST("the BVH answers as brute force does on ties, a huge floor and far from the origin", "10.A", 3)
