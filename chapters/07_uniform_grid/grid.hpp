@@ -211,14 +211,36 @@ inline void say_lambda_lowered(const char* structure, const GridPlan& plan, floa
                  plan.shape.n.x, plan.shape.n.y, plan.shape.n.z);
 }
 
-// Builds the grid over every object, lambda cells per object (lowered where it would not pay). Throws InputError when the resolution asked for would pass max_grid_cells.
+// The box around every object.
+inline Bounds bounds_of_all(const Objects& objects)
+{
+    Bounds scene;
+    for (int k = 0; k < objects.size(); ++k)
+        scene.grow(objects.bounds(k));
+    return scene;
+}
+
+// The plan (plan_grid) of a grid over every object of the scene's box `scene`, up to max_per_axis
+// cells an axis; a lambda lowered is said on stderr in the name of `structure`.
+inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, float lambda, int max_per_axis,
+                              const char* structure)
+{
+    const int count = objects.size();
+    const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
+    std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
+    std::iota(all.begin(), all.end(), 0u);
+    const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_per_axis);
+    say_lambda_lowered(structure, plan, lambda, count);
+    return plan;
+}
+
+// Builds the grid over every object, lambda cells per object (lowered where it would not pay).
+// Throws InputError when the resolution asked for would pass max_grid_cells.
 inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = nullptr)
 {
     const Timer timer;
     const int count = objects.size();
-    Bounds scene;
-    for (int k = 0; k < count; ++k)
-        scene.grow(objects.bounds(k));
+    const Bounds scene = bounds_of_all(objects);
     Grid grid;
     const cell3 n = grid_resolution(resolution_box(scene), count, lambda);
     const long long cells = static_cast<long long>(n.x) * n.y * n.z;
@@ -227,12 +249,10 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
                          " cells (lambda " + std::to_string(lambda) + ", " + std::to_string(count) +
                          " objects) passes the limit of " + std::to_string(max_grid_cells) +
                          " cells: choose a smaller lambda");
-    const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
+    const GridPlan plan = plan_over_all(objects, scene, lambda, max_cells_per_axis, "the grid");
+    grid.shape = plan.shape;
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
-    const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_cells_per_axis);
-    say_lambda_lowered("the grid", plan, lambda, count);
-    grid.shape = plan.shape;
     list_objects(grid, all, plan.ranges);
     const int cell_count = grid.shape.cell_count();
 

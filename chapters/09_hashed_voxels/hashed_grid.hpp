@@ -176,20 +176,13 @@ private:
     static GridPlan plan_shape(const Objects& objects, float lambda)
     {
         const int count = objects.size();
-        Bounds scene;
-        for (int k = 0; k < count; ++k)
-            scene.grow(objects.bounds(k));
+        const Bounds scene = bounds_of_all(objects);
         const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
         if (static_cast<long long>(asked.x) * asked.y * asked.z >= (1LL << 31))
             throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
                              std::to_string(asked.z) +
                              " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
-        const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
-        std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
-        std::iota(all.begin(), all.end(), 0u);
-        const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_hashed_cells_per_axis);
-        say_lambda_lowered("the hashed grid", plan, lambda, count);
-        return plan;
+        return plan_over_all(objects, scene, lambda, max_hashed_cells_per_axis, "the hashed grid");
     }
 
     // Every (cell, object) reference as one 64-bit key, cell above object, sorted; then one

@@ -85,10 +85,7 @@ private:
         // rounding, which can put the hit point a little outside the object's own box (a ray leaving
         // a plane at a grazing angle, a triangle far larger than its distance from the ray's origin);
         // brute force reports such a hit, and the BVH must find it too.
-        Bounds scene;
-        for (int k = 0; k < n; ++k)
-            scene.grow(objects.bounds(k));
-        const float margin = n > 0 ? grid_margin_of(scene) : 0.0f;
+        const float margin = n > 0 ? grid_margin_of(bounds_of_all(objects)) : 0.0f;
         for (int k = 0; k < n; ++k) {
             boxes_[k] = grown(objects.bounds(k), margin);
             centres_[k] = boxes_[k].centre();

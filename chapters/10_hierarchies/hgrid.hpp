@@ -42,10 +42,8 @@ public:
         const Timer timer;
         h_.grids.push_back({build_grid(objects, settings.lambda), {}});
         h_.grids[0].child.assign(static_cast<std::size_t>(h_.grids[0].grid.shape.cell_count()), -1);
-        Bounds scene;  // the margin is the root's (build_grid's), at every level
-        for (int k = 0; k < objects.size(); ++k)
-            scene.grow(objects.bounds(k));
-        margin_ = objects.size() > 0 ? grid_margin_of(scene) : 0.0f;
+        // The margin is the root's (build_grid's), at every level.
+        margin_ = objects.size() > 0 ? grid_margin_of(bounds_of_all(objects)) : 0.0f;
         cells_ = h_.grids[0].grid.shape.cell_count();
         references_ = static_cast<long long>(h_.grids[0].grid.object_index.size());
         subdivide(objects, 0, 0);
