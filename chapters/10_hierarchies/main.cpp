@@ -66,63 +66,72 @@ std::string ms(const Timing& t)
     return fixed(t.median, 1) + spread(t);
 }
 
-void sweep(const Options& o, const CommandLine& cli)
-{
-    const RenderSettings settings = sweep_settings(o.common, cli, 160, 90);
-    std::cerr << "measuring the BVH's leaf size, depth and split, the hierarchy of grids' leaf size and depth, then every "
-                 "structure on six scenes...\n";
-    std::ofstream csv(o.sweep.csv);
-    csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms,"
-           "build_ms_min,build_ms_max,render_ms_min,render_ms_max,runs\n";
-    const auto csv_times = [&](const Measurement& m) {
-        csv << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ',' << m.render_ms.max << ','
-            << o.sweep.repeat << '\n';
-    };
-    const NffScene stadium = ch10::figure_scene();
-    const auto objects_in = [](const NffScene& s) { return s.spheres.size() + s.triangles.size() + s.cones.size(); };
-    const std::string how = std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                            ", release build, 1 thread, medians of " + std::to_string(o.sweep.repeat) + " runs";
-    LessonTable bvh_table{"10.bvh",
-                          {{"split"}, {"leaf size"}, {"depth limit"}, {"nodes"}, {"depth"}, {"MB"}, {"build ms", true},
-                           {"nodes/ray"}, {"tests/ray"}, {"render ms", true}},
-                          {},
-                          "The BVH on the " + stadium.name + ", " + how + "; every image identical."};
+// What the sweep's three parts share: the render, the runs, the CSV every row goes to, the figure's
+// stadium, and the BVH's picture of it, which every other image must equal.
+struct Sweep {
+    RenderSettings settings;
+    int repeat = 1;
+    std::ofstream csv;
+    NffScene stadium;
+    std::string how;  // for the captions
     std::vector<std::uint8_t> reference;
-    const auto bvh_row = [&](BvhSplit split, int leaf, int depth) {
+
+    static std::size_t objects_in(const NffScene& s) { return s.spheres.size() + s.triangles.size() + s.cones.size(); }
+
+    void csv_row(const NffScene& nff, const std::string& structure, const std::string& setting, const Measurement& m)
+    {
+        csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << structure << ',' << setting << ','
+            << m.build_ms.median << ',' << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ','
+            << m.per_ray(Counter::nodes_visited) << ',' << m.per_ray(Counter::cells_visited) << ','
+            << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ','
+            << m.render_ms.max << ',' << repeat << '\n';
+    }
+};
+
+// The BVH's leaf size, depth limit and split on the stadium.
+LessonTable sweep_bvh(Sweep& w)
+{
+    LessonTable table{"10.bvh",
+                      {{"split"}, {"leaf size"}, {"depth limit"}, {"nodes"}, {"depth"}, {"MB"}, {"build ms", true},
+                       {"nodes/ray"}, {"tests/ray"}, {"render ms", true}},
+                      {},
+                      "The BVH on the " + w.stadium.name + ", " + w.how + "; every image identical."};
+    const auto row = [&](BvhSplit split, int leaf, int depth) {
         BvhSettings b;
         b.split = split;
         b.leaf_size = leaf;
         b.max_depth = depth;
         BvhStats tree;
-        const Measurement m = measure(stadium, keeping_stats<BvhAccel>(tree, b), settings, o.sweep.repeat);
-        if (reference.empty())
-            reference = m.pixels;
-        if (m.pixels != reference)
+        const Measurement m = measure(w.stadium, keeping_stats<BvhAccel>(tree, b), w.settings, w.repeat);
+        if (w.reference.empty())
+            w.reference = m.pixels;
+        if (m.pixels != w.reference)
             throw std::runtime_error("a BVH's image differs from another's: a bug of the kit");
-        bvh_table.row({split == BvhSplit::sah ? "SAH" : "median", std::to_string(leaf), std::to_string(depth),
-                       grouped(static_cast<unsigned long long>(tree.nodes)), std::to_string(tree.depth),
-                       fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
-                       fixed(m.per_ray(Counter::nodes_visited), 1), fixed(m.per_ray(Counter::intersection_tests), 1),
-                       ms(m.render_ms)});
-        csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",bvh,"
-            << (split == BvhSplit::sah ? "sah" : "median") << ":leaf" << leaf << ":depth" << depth << ','
-            << m.build_ms.median << ',' << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ','
-            << m.per_ray(Counter::nodes_visited) << ",0," << m.render_ms.median;
-        csv_times(m);
+        const std::string name = split == BvhSplit::sah ? "sah" : "median";
+        table.row({split == BvhSplit::sah ? "SAH" : "median", std::to_string(leaf), std::to_string(depth),
+                   grouped(static_cast<unsigned long long>(tree.nodes)), std::to_string(tree.depth),
+                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
+                   fixed(m.per_ray(Counter::nodes_visited), 1), fixed(m.per_ray(Counter::intersection_tests), 1),
+                   ms(m.render_ms)});
+        w.csv_row(w.stadium, "bvh", name + ":leaf" + std::to_string(leaf) + ":depth" + std::to_string(depth), m);
     };
     for (const int leaf : {1, 2, 4, 8, 16, 32})
-        bvh_row(BvhSplit::sah, leaf, 48);
+        row(BvhSplit::sah, leaf, 48);
     for (const int depth : {4, 8, 12, 16})
-        bvh_row(BvhSplit::sah, 4, depth);
-    for (const int leaf : {4})
-        bvh_row(BvhSplit::median, leaf, 48);
+        row(BvhSplit::sah, 4, depth);
+    row(BvhSplit::median, 4, 48);
+    return table;
+}
 
-    LessonTable hgrid_table{"10.hgrid",
-                            {{"leaf size"}, {"depth limit"}, {"grids"}, {"cells"}, {"MB"}, {"build ms", true},
-                             {"cells/ray"}, {"tests/ray"}, {"render ms", true}},
-                            {},
-                            "The hierarchy of grids on the " + stadium.name + " (lambda " +
-                                fixed(ch07::default_lambda, 0) + " at every level), " + how + "; every image identical to the BVH's."};
+// The hierarchy of grids' leaf size and depth limit on the stadium.
+LessonTable sweep_hgrid(Sweep& w)
+{
+    LessonTable table{"10.hgrid",
+                      {{"leaf size"}, {"depth limit"}, {"grids"}, {"cells"}, {"MB"}, {"build ms", true},
+                       {"cells/ray"}, {"tests/ray"}, {"render ms", true}},
+                      {},
+                      "The hierarchy of grids on the " + w.stadium.name + " (lambda " + fixed(ch07::default_lambda, 0) +
+                          " at every level), " + w.how + "; every image identical to the BVH's."};
     for (const int depth : {0, 1, 2, 3})
         for (const int leaf : {4, 8, 16}) {
             if (depth == 0 && leaf != 8)
@@ -131,25 +140,27 @@ void sweep(const Options& o, const CommandLine& cli)
             h.leaf_size = leaf;
             h.max_depth = depth;
             HGridStats built;
-            const Measurement m = measure(stadium, keeping_stats<HGridAccel>(built, h), settings, o.sweep.repeat);
-            if (m.pixels != reference)
+            const Measurement m = measure(w.stadium, keeping_stats<HGridAccel>(built, h), w.settings, w.repeat);
+            if (m.pixels != w.reference)
                 throw std::runtime_error("a hierarchy of grids' image differs from the BVH's: a bug of the kit");
-            hgrid_table.row(
+            table.row(
                 {std::to_string(leaf), std::to_string(depth), grouped(static_cast<unsigned long long>(built.grids)),
                  grouped(static_cast<unsigned long long>(built.cells)), fixed(static_cast<double>(m.bytes) / 1e6, 2),
                  ms(m.build_ms), fixed(m.per_ray(Counter::cells_visited), 1),
                  fixed(m.per_ray(Counter::intersection_tests), 1), ms(m.render_ms)});
-            csv << '"' << stadium.name << "\"," << objects_in(stadium) << ",hgrid,leaf" << leaf << ":depth" << depth
-                << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ",0,"
-                << m.per_ray(Counter::cells_visited) << ',' << m.render_ms.median;
-            csv_times(m);
+            w.csv_row(w.stadium, "hgrid", "leaf" + std::to_string(leaf) + ":depth" + std::to_string(depth), m);
         }
+    return table;
+}
 
-    LessonTable all{"10.structures",
-                    {{"scene"}, {"objects"}, {"structure"}, {"MB"}, {"build ms", true}, {"tests/ray"},
-                     {"nodes or cells/ray"}, {"render ms", true}},
-                    {},
-                    "Every structure side by side, " + how + "; every image identical to the BVH's."};
+// Every structure at its defaults on the kit's generated scenes.
+LessonTable sweep_structures(Sweep& w)
+{
+    LessonTable table{"10.structures",
+                      {{"scene"}, {"objects"}, {"structure"}, {"MB"}, {"build ms", true}, {"tests/ray"},
+                       {"nodes or cells/ray"}, {"render ms", true}},
+                      {},
+                      "Every structure side by side, " + w.how + "; every image identical to the BVH's."};
     const std::vector<NffScene> scenes = {
         generated_scene(write_stadium, 5, "teapot in a stadium 5"),
         generated_scene(write_sticks, 5, "sticks 5"),
@@ -160,31 +171,52 @@ void sweep(const Options& o, const CommandLine& cli)
     };
     for (const NffScene& nff : scenes) {
         std::vector<std::uint8_t> same;
+        const std::string objects = grouped(Sweep::objects_in(nff));
         for (const std::string name : {"bvh", "hgrid", "grid", "hashed"}) {
             const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
+            const auto make = [&](const Objects& objs) {
+                return ch10::make_accelerator(name, objs, lambda, BvhSettings{});
+            };
             Measurement m;
             try {
-                m = measure(nff, [&](const Objects& objs) { return ch10::make_accelerator(name, objs, lambda, BvhSettings{}); },
-                            settings, o.sweep.repeat);
+                m = measure(nff, make, w.settings, w.repeat);
             } catch (const InputError& e) {
-                all.row({nff.name, grouped(objects_in(nff)), name, e.what()});
+                table.row({nff.name, objects, name, e.what()});
                 continue;
             }
             if (same.empty())
                 same = m.pixels;
             if (m.pixels != same)
-                throw std::runtime_error("the " + name + "'s image differs from the BVH's on " + nff.name + ": a bug of the kit");
-            all.row({nff.name, grouped(objects_in(nff)), name, fixed(static_cast<double>(m.bytes) / 1e6, 2),
-                     ms(m.build_ms), fixed(m.per_ray(Counter::intersection_tests), 1),
-                     fixed(name == "bvh" ? m.per_ray(Counter::nodes_visited) : m.per_ray(Counter::cells_visited), 1),
-                     ms(m.render_ms)});
-            csv << '"' << nff.name << "\"," << objects_in(nff) << ',' << name << ",default," << m.build_ms.median << ','
-                << m.bytes << ',' << m.per_ray(Counter::intersection_tests) << ',' << m.per_ray(Counter::nodes_visited)
-                << ',' << m.per_ray(Counter::cells_visited) << ',' << m.render_ms.median;
-            csv_times(m);
+                throw std::runtime_error("the " + name + "'s image differs from the BVH's on " + nff.name +
+                                         ": a bug of the kit");
+            const Counter steps = name == "bvh" ? Counter::nodes_visited : Counter::cells_visited;
+            table.row({nff.name, objects, name, fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms),
+                       fixed(m.per_ray(Counter::intersection_tests), 1), fixed(m.per_ray(steps), 1),
+                       ms(m.render_ms)});
+            w.csv_row(nff, name, "default", m);
         }
     }
-    write_lesson_tables(tables_beside(o.sweep.csv), {bvh_table, hgrid_table, all}, std::cout);
+    return table;
+}
+
+void sweep(const Options& o, const CommandLine& cli)
+{
+    Sweep w;
+    w.settings = sweep_settings(o.common, cli, 160, 90);
+    w.repeat = o.sweep.repeat;
+    w.csv.open(o.sweep.csv);
+    w.csv << "scene,objects,structure,setting,build_ms,bytes,tests_per_ray,nodes_per_ray,cells_per_ray,render_ms,"
+             "build_ms_min,build_ms_max,render_ms_min,render_ms_max,runs\n";
+    w.stadium = ch10::figure_scene();
+    w.how = std::to_string(w.settings.width) + "x" + std::to_string(w.settings.height) +
+            ", release build, 1 thread, medians of " + std::to_string(w.repeat) + " runs";
+    std::cerr
+        << "measuring the BVH's leaf size, depth and split, the hierarchy of grids' leaf size and depth, then every "
+           "structure on six scenes...\n";
+    const LessonTable bvh = sweep_bvh(w);
+    const LessonTable hgrid = sweep_hgrid(w);
+    const LessonTable all = sweep_structures(w);
+    write_lesson_tables(tables_beside(o.sweep.csv), {bvh, hgrid, all}, std::cout);
     std::cout << "\nwrote " << o.sweep.csv << " and " << tables_beside(o.sweep.csv) << '\n';
 }
 

@@ -184,7 +184,7 @@ struct Row {
     std::size_t bytes = 0;
     double tests_per_ray = 0, steps_per_ray = 0;  // steps: nodes or cells
     size_t timed_rays = 0, all_rays = 0;
-    int ties = 0;
+    int checked_rays = 0, ties = 0;
 };
 
 struct Scene {
@@ -216,6 +216,85 @@ std::vector<Scene> scenes(const Options& o)
 constexpr double pass_budget_seconds = 0.1;
 constexpr double brute_tests_budget = 3e7;
 
+// The median of up to `repeat` builds (one when a build takes over a second), in `build_ms`.
+std::unique_ptr<Accelerator> build_timed(const Structure& s, const Objects& objects, int threads, int repeat,
+                                         double& build_ms)
+{
+    std::unique_ptr<Accelerator> accel;
+    std::vector<double> builds;
+    for (int r = 0; r < repeat; ++r) {
+        const Timer timer;
+        accel = s.make(objects, threads);
+        builds.push_back(timer.seconds());
+        if (builds.back() > 1.0)
+            break;
+    }
+    build_ms = 1e3 * median(builds);
+    return accel;
+}
+
+// One structure on one set of rays: checked against the reference's answers on every ray it is
+// timed on (single-threaded, counted), then timed, closest and any, on `threads` threads.
+Row time_rays(const Structure& s, const Accelerator& accel, const RaySet& set, const Answers& want,
+              const Objects& objects, float scale, int threads, const Options& o, const std::string& scene)
+{
+    std::vector<size_t> which = strided(set.rays.size(), 1);
+    if (s.name == "brute")
+        which = strided(set.rays.size(), static_cast<size_t>(std::ceil(static_cast<double>(set.rays.size()) *
+                                                                        objects.size() / brute_tests_budget)));
+    reset_counters();
+    const Timer check_timer;
+    const Answers got = answer(accel, set, objects, which);
+    const double check_seconds = check_timer.seconds();
+    const Counts counts = total_counts();
+    const Check c = check(got, want, which, set, !s.embree, scale);
+    if (c.wrong > 0)
+        throw std::runtime_error(s.name + " on " + scene + ": " + std::to_string(c.wrong) + " of " +
+                                 std::to_string(c.rays) + " rays differ from the reference; the first: " + c.first);
+    // Timed on a sample when the full set would take too long.
+    const double per_ray = check_seconds / (2.0 * static_cast<double>(which.size()));
+    const double wanted = pass_budget_seconds / std::max(per_ray, 1e-12);
+    if (static_cast<double>(which.size()) > 4.0 * wanted)
+        which = strided(set.rays.size(), static_cast<size_t>(static_cast<double>(set.rays.size()) / wanted));
+    // A pass shorter than the budget is repeated within one timing, as many times as the untimed
+    // warm-up pass says fit in the budget: the warm-up's own time, thread starts included, so that a
+    // scene of one object (nanoseconds a ray) is not repeated a million times to measure the
+    // scheduler. (Not in --tiny, a check: one pass.)
+    const auto timed = [&](bool any_hit) {
+        const double warm_up = pass(accel, set, objects, which, any_hit, threads);
+        const int loops = o.tiny ? 1
+                                 : static_cast<int>(
+                                       std::clamp(std::ceil(pass_budget_seconds / std::max(warm_up, 1e-6)), 1.0, 1e4));
+        double seconds = 0.0;
+        for (int l = 0; l < loops; ++l)
+            seconds += pass(accel, set, objects, which, any_hit, threads);
+        return seconds / loops;
+    };
+    std::vector<double> closest_s, any_s;
+    for (int run = 0; run < o.repeat; ++run) {
+        closest_s.push_back(timed(false));
+        any_s.push_back(timed(true));
+    }
+    Row row;
+    row.scene = scene;
+    row.objects = objects.size();
+    row.rays = set.name;
+    row.structure = s.name;
+    row.threads = threads;
+    row.mrays_closest = static_cast<double>(which.size()) / median(closest_s) / 1e6;
+    row.mrays_any = static_cast<double>(which.size()) / median(any_s) / 1e6;
+    row.bytes = accel.bytes();
+    const double n = 2.0 * static_cast<double>(c.rays);  // closest and any, per ray
+    row.tests_per_ray = static_cast<double>(counted(counts, Counter::intersection_tests)) / n;
+    row.steps_per_ray =
+        static_cast<double>(counted(counts, Counter::nodes_visited) + counted(counts, Counter::cells_visited)) / n;
+    row.timed_rays = which.size();
+    row.all_rays = set.rays.size();
+    row.checked_rays = c.rays;
+    row.ties = c.ties;
+    return row;
+}
+
 void bench_scene(const Scene& sc, const Options& o, std::vector<Row>& rows, std::ostream& log)
 {
     RenderSettings settings;
@@ -225,10 +304,7 @@ void bench_scene(const Scene& sc, const Options& o, std::vector<Row>& rows, std:
     const SceneRender file = scene_render(sc.nff, settings);
     LitScene scene = lit_scene(file.scene);
     const Objects objects = objects_of(scene, lit_tests);
-    Bounds box;
-    for (int k = 0; k < objects.size(); ++k)
-        box.grow(objects.bounds(k));
-    const float scale = 1e-3f * glm::length(box.extent());
+    const float scale = 1e-3f * glm::length(bounds_of_all(objects).extent());
 
     // The reference: the kit's BVH, proven equal to brute force by chapter 10's tests (and checked
     // against brute force again here, on its sample).
@@ -250,90 +326,27 @@ void bench_scene(const Scene& sc, const Options& o, std::vector<Row>& rows, std:
         for (const int threads : {1, all_threads()}) {
             if (threads > 1 && all_threads() == 1)
                 break;
-            // Build: the median of up to `repeat` builds (one when a build takes over a second).
             // The kit builds on one thread, so its structure serves both thread counts; Embree
             // builds again on the threads it is given.
             if (!accel || s.embree) {
-                std::vector<double> builds;
                 try {
-                    for (int r = 0; r < o.repeat; ++r) {
-                        const Timer timer;
-                        accel = s.make(objects, threads);
-                        builds.push_back(timer.seconds());
-                        if (builds.back() > 1.0)
-                            break;
-                    }
+                    accel = build_timed(s, objects, threads, o.repeat, build_ms);
                 } catch (const InputError& e) {
                     log << "  " << s.name << ": not built: " << e.what() << '\n';
                     break;
                 }
-                build_ms = 1e3 * median(builds);
             }
             for (size_t r = 0; r < sets.size(); ++r) {
-                const RaySet& set = sets[r];
-                if (set.rays.empty())
+                if (sets[r].rays.empty())
                     continue;
-                std::vector<size_t> which = strided(set.rays.size(), 1);
-                if (s.name == "brute")
-                    which = strided(set.rays.size(),
-                                    static_cast<size_t>(std::ceil(static_cast<double>(set.rays.size()) * objects.size() /
-                                                                  brute_tests_budget)));
-                // Checked on every ray it is timed on, single-threaded, counted.
-                reset_counters();
-                const Timer check_timer;
-                const Answers got = answer(*accel, set, objects, which);
-                const double check_seconds = check_timer.seconds();
-                const Counts counts = total_counts();
-                const Check c = check(got, want[r], which, set, !s.embree, scale);
-                if (c.wrong > 0)
-                    throw std::runtime_error(s.name + " on " + sc.name + ": " + std::to_string(c.wrong) + " of " +
-                                             std::to_string(c.rays) + " rays differ from the reference; the first: " +
-                                             c.first);
-                // Timed on a sample when the full set would take too long.
-                const double per_ray = check_seconds / (2.0 * static_cast<double>(which.size()));
-                const double wanted = pass_budget_seconds / std::max(per_ray, 1e-12);
-                if (static_cast<double>(which.size()) > 4.0 * wanted)
-                    which = strided(set.rays.size(), static_cast<size_t>(static_cast<double>(set.rays.size()) / wanted));
-                // A pass shorter than the budget is repeated within one timing, as many times as the
-                // untimed warm-up pass says fit in the budget: the warm-up's own time, thread starts
-                // included, so that a scene of one object (nanoseconds a ray) is not repeated a
-                // million times to measure the scheduler. (Not in --tiny, a check: one pass.)
-                const auto timed = [&](bool any_hit) {
-                    const double warm_up = pass(*accel, set, objects, which, any_hit, threads);
-                    const int loops =
-                        o.tiny ? 1 : static_cast<int>(std::clamp(std::ceil(pass_budget_seconds / std::max(warm_up, 1e-6)), 1.0, 1e4));
-                    double seconds = 0.0;
-                    for (int l = 0; l < loops; ++l)
-                        seconds += pass(*accel, set, objects, which, any_hit, threads);
-                    return seconds / loops;
-                };
-                std::vector<double> closest_s, any_s;
-                for (int run = 0; run < o.repeat; ++run) {
-                    closest_s.push_back(timed(false));
-                    any_s.push_back(timed(true));
-                }
-                Row row;
-                row.scene = sc.name;
-                row.objects = objects.size();
-                row.rays = set.name;
-                row.structure = s.name;
-                row.threads = threads;
-                row.mrays_closest = static_cast<double>(which.size()) / median(closest_s) / 1e6;
-                row.mrays_any = static_cast<double>(which.size()) / median(any_s) / 1e6;
+                Row row = time_rays(s, *accel, sets[r], want[r], objects, scale, threads, o, sc.name);
                 row.build_ms = build_ms;
-                row.bytes = accel->bytes();
-                const double n = 2.0 * static_cast<double>(c.rays);  // closest and any, per ray
-                row.tests_per_ray = static_cast<double>(counted(counts, Counter::intersection_tests)) / n;
-                row.steps_per_ray = static_cast<double>(counted(counts, Counter::nodes_visited) +
-                                                        counted(counts, Counter::cells_visited)) / n;
-                row.timed_rays = which.size();
-                row.all_rays = set.rays.size();
-                row.ties = c.ties;
                 rows.push_back(row);
                 log << "  " << std::left << std::setw(14) << s.name << std::right << " " << threads << " thread"
-                    << (threads > 1 ? "s " : "  ") << std::setw(10) << set.name << std::setw(9) << rate(row.mrays_closest)
-                    << " Mrays/s closest, " << std::setw(9) << rate(row.mrays_any) << " any; " << c.rays << " rays checked" << (c.ties ? ", " + std::to_string(c.ties) + " ties" : "")
-                    << '\n';
+                    << (threads > 1 ? "s " : "  ") << std::setw(10) << sets[r].name << std::setw(9)
+                    << rate(row.mrays_closest) << " Mrays/s closest, " << std::setw(9) << rate(row.mrays_any)
+                    << " any; " << row.checked_rays << " rays checked"
+                    << (row.ties ? ", " + std::to_string(row.ties) + " ties" : "") << '\n';
             }
         }
     }
