@@ -10,6 +10,7 @@
 #include "common/random.hpp"
 #include "common/vec.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>

@@ -3,6 +3,7 @@
 // file, through any accelerator) shades its rays with it.
 #pragma once
 
+#include "01_ray_casting/01_ray_casting.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "04_shadow_feelers/closest_hit.hpp"
 #include "04_shadow_feelers/nff_scene.hpp"

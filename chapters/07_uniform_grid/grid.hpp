@@ -367,6 +367,7 @@ inline void report_grid(std::ostream& out, const GridStats& s)
         << "grid_references=" << s.references << '\n'
         << "references_per_object=" << (s.objects > 0 ? static_cast<double>(s.references) / s.objects : 0.0) << '\n'
         << "grid_bytes=" << s.bytes << '\n'
+        << "bytes=" << s.bytes << '\n'
         << "build_seconds=" << s.build_seconds << '\n';
 }
 

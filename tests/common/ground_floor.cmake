@@ -1,10 +1,11 @@
-# The ground floor stands alone: no file of common/ includes a chapter's header, so a chapter can
-# build on common/ and never the other way round.
+# The ground floor stands alone: no file of common/ includes a chapter's header (nor the programs'
+# shared code, the benchmark's, the solutions' or the exercises'), so a chapter can build on common/
+# and never the other way round.
 # cmake -DKIT=<kit folder> -P ground_floor.cmake
 file(GLOB_RECURSE files "${KIT}/common/*.hpp" "${KIT}/common/*.cpp")
 set(found "")
 foreach(file IN LISTS files)
-  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<](chapters/)?[0-9][0-9]_|^[ \t]*#[ \t]*include[ \t]*[\"<](benchmark|solutions|exercises)/")
+  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<](chapters/)?[0-9][0-9]_|^[ \t]*#[ \t]*include[ \t]*[\"<](benchmark|programs|solutions|exercises)/")
   foreach(line IN LISTS lines)
     file(RELATIVE_PATH name "${KIT}" "${file}")
     string(APPEND found "\n  ${name}: ${line}")
