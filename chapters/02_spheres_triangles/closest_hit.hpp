@@ -20,24 +20,20 @@
 namespace rt {
 
 // The nearest hit over all spheres, triangles and cones with t strictly inside `range`. Its normal
-// is the sphere's, the triangle's corner normals interpolated at the hit, or the cone's; `object`
-// counts the spheres first, then the triangles, then the cones (object_ref, objects.hpp).
+// is the object's own at the hit (Objects::normal_at: the sphere's, the cone's), except a
+// triangle's: the scene's corner normals interpolated at the hit (EXERCISE 02.6), which shade a
+// mesh of a curved surface smoothly. `object` numbers the objects as objects.hpp does.
 inline std::optional<Hit> closest_hit(const Ray& ray, const ShapeScene& scene, Interval range, ShapeTests tests = {})
 {
+    const Objects objects = objects_of(scene, tests);
     ObjectHit h;
-    if (!brute_force().closest(ray, range, objects_of(scene, tests), h))
+    if (!brute_force().closest(ray, range, objects, h))
         return std::nullopt;
     const point3 p = ray.at(h.t);
-    const ObjectRef o = object_ref(scene, h.object);
-    switch (o.kind) {
-    case ObjectKind::sphere:
-        return Hit{h.t, p, sphere_normal(scene.spheres[o.index], p), h.object};
-    case ObjectKind::triangle:
+    const ObjectRef o = objects.ref(h.object);
+    if (o.kind == ObjectKind::triangle)
         return Hit{h.t, p, interpolated_normal(scene.corner_normals[o.index], {h.t, h.beta, h.gamma}), h.object};
-    case ObjectKind::cone:
-        break;
-    }
-    return Hit{h.t, p, cone_normal(scene.cones[o.index], p), h.object};
+    return Hit{h.t, p, objects.normal_at(h.object, p), h.object};
 }
 
 }  // namespace rt

@@ -166,12 +166,7 @@ inline point3 cone_surface_point(const Cone& cone, const point3& p)
 // that rounds the point to float and widens it back, a round trip GCC 12.2 at -O3 dropped in some
 // translation units and kept in others, so chapter 04's program and chapter 07's gave one hit two
 // normals a unit in the last place apart (chapter 04's lesson, "One brute force").
-struct ConeSurfacePoint {
-    point3 p;
-    vec3 n;
-};
-
-inline ConeSurfacePoint cone_surface(const Cone& cone, const point3& p)
+inline OnSurface cone_surface(const Cone& cone, const point3& p)
 {
     const cone_detail::Frame frame = cone_detail::frame(cone);
     const dpoint3 q = cone_detail::side_point(frame, dpoint3(p));

@@ -2,8 +2,9 @@
 // objects 0 .. S-1, triangles S .. S+T-1, cones after them (the order every chapter's scene
 // already numbers its hits in). An accelerator (chapters 07-10) never sees a sphere or a triangle:
 // it holds object numbers and asks this list two things, the object's bounds and whether a ray
-// hits it. To them a new kind of shape is one more case in `intersect` and in `bounds` (the
-// README's "Adding a shape" lists what shading needs besides).
+// hits it; shading asks it a third, where the hit lies and which way the surface faces there. So a
+// new kind of shape is one case in each of `intersect`, `bounds`, `normal_at` and `surface`; outside
+// this file only the triangles' smooth shading names a kind (the README's "Adding a shape").
 //
 // The list is a view of the scene's own arrays (no copy), with the choice of tests a query asks
 // for: chapter 02's program picks among its sphere and triangle tests, chapter 04 on uses the
@@ -12,10 +13,12 @@
 #pragma once
 
 #include "02_spheres_triangles/shape_tests.hpp"
+#include "02_spheres_triangles/surface_point.hpp"
 #include "common/bounds.hpp"
 
 #include <glm/common.hpp>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -33,6 +36,7 @@ struct ObjectHit {
 // triangles, then cones) is written once, in object_ref and first_of below: everything else asks
 // them.
 enum class ObjectKind { sphere, triangle, cone };
+constexpr int object_kinds = 3;
 
 // An object by its kind and its place among that kind's: spheres[index], triangles[index] or
 // cones[index] of the scene.
@@ -64,22 +68,17 @@ ObjectRef object_ref(const Scene& scene, int object)
     return object_ref(object, static_cast<int>(scene.spheres.size()), static_cast<int>(scene.triangles.size()));
 }
 
-// What a scene keeps beside each kind's array, index for index (a colour, a material), for the
-// object `r` names.
+// What a scene keeps beside each kind's array, index for index (a colour, a material): one list
+// per kind, so a new kind needs no new member in any scene.
 template <class T>
-const T& per_kind(const ObjectRef& r, const std::vector<T>& of_spheres, const std::vector<T>& of_triangles,
-                  const std::vector<T>& of_cones)
-{
-    switch (r.kind) {
-    case ObjectKind::sphere:
-        return of_spheres[r.index];
-    case ObjectKind::triangle:
-        return of_triangles[r.index];
-    case ObjectKind::cone:
-        break;
-    }
-    return of_cones[r.index];
-}
+struct PerKind {
+    std::array<std::vector<T>, object_kinds> of;
+
+    std::vector<T>& operator[](ObjectKind kind) { return of[static_cast<int>(kind)]; }
+    const std::vector<T>& operator[](ObjectKind kind) const { return of[static_cast<int>(kind)]; }
+    // What it keeps for the object `r` names.
+    const T& operator[](const ObjectRef& r) const { return (*this)[r.kind][r.index]; }
+};
 
 // Why 1e-6: above the few float roundings (each 6e-8 of 1) in normalising the axis and squaring it.
 constexpr float cone_reach_margin = 1e-6f;
@@ -158,6 +157,43 @@ struct Objects {
             b.grow(c.apex + c.apex_radius * reach);
         }
         return widened_one_ulp(b);
+    }
+
+    // The unit outward normal of object k at p, a point found on it at ray.at(t) (chapter 02's
+    // shading): a sphere's from its centre, a triangle's face normal, a cone's from its axis.
+    vec3 normal_at(int k, const point3& p) const
+    {
+        const ObjectRef o = ref(k);
+        switch (o.kind) {
+        case ObjectKind::sphere:
+            return sphere_normal(spheres[o.index], p);
+        case ObjectKind::triangle:
+            return face_normal(triangles[o.index]);
+        case ObjectKind::cone:
+            break;
+        }
+        return cone_normal(cones[o.index], p);
+    }
+
+    // The hit as a new ray leaves it (chapter 04 on): its point moved onto the surface within float
+    // rounding (surface_point.hpp) and the outward normal there, a triangle's its face normal.
+    OnSurface surface(const Ray& ray, const ObjectHit& hit) const
+    {
+        const ObjectRef o = ref(hit.object);
+        switch (o.kind) {
+        case ObjectKind::sphere: {
+            const Sphere& sphere = spheres[o.index];
+            const point3 p = sphere_surface_point(sphere, ray.at(hit.t));
+            return {p, sphere_normal(sphere, p)};
+        }
+        case ObjectKind::triangle: {
+            const Triangle& tri = triangles[o.index];
+            return {triangle_surface_point(tri, {hit.t, hit.beta, hit.gamma}), face_normal(tri)};
+        }
+        case ObjectKind::cone:
+            break;
+        }
+        return cone_surface(cones[o.index], ray.at(hit.t));
     }
 };
 

@@ -18,49 +18,45 @@ namespace rt {
 
 struct ShapeScene {
     std::vector<Sphere> spheres;
-    std::vector<color> sphere_albedo;  // sphere_albedo[k] is the colour of spheres[k]
-
     std::vector<Triangle> triangles;
     std::vector<CornerNormals> corner_normals;  // one per triangle; a flat one has its face normal thrice
-    std::vector<color> triangle_albedo;
-
     std::vector<Cone> cones;
-    std::vector<color> cone_albedo;
+    PerKind<color> albedo;  // albedo[ObjectKind::sphere][k] is the colour of spheres[k], and so on
 
     color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
 
     // The colour of the object a hit names.
     const color& albedo_of(int object) const
     {
-        return per_kind(object_ref(*this, object), sphere_albedo, triangle_albedo, cone_albedo);
+        return albedo[object_ref(*this, object)];
     }
 
-    void add_sphere(const Sphere& sphere, const color& albedo)
+    void add_sphere(const Sphere& sphere, const color& colour)
     {
         spheres.push_back(sphere);
-        sphere_albedo.push_back(albedo);
+        albedo[ObjectKind::sphere].push_back(colour);
     }
 
     // A triangle shaded with its corners' normals.
-    void add_triangle(const Triangle& tri, const CornerNormals& normals, const color& albedo)
+    void add_triangle(const Triangle& tri, const CornerNormals& normals, const color& colour)
     {
-        assert(spheres.size() == sphere_albedo.size() && triangles.size() == corner_normals.size());
+        assert(triangles.size() == corner_normals.size());
         triangles.push_back(tri);
         corner_normals.push_back(normals);
-        triangle_albedo.push_back(albedo);
+        albedo[ObjectKind::triangle].push_back(colour);
     }
 
-    void add_cone(const Cone& cone, const color& albedo)
+    void add_cone(const Cone& cone, const color& colour)
     {
         cones.push_back(cone);
-        cone_albedo.push_back(albedo);
+        albedo[ObjectKind::cone].push_back(colour);
     }
 
     // A flat triangle: its face normal, (b - a) x (c - a) made unit, at every corner.
-    void add_triangle(const Triangle& tri, const color& albedo)
+    void add_triangle(const Triangle& tri, const color& colour)
     {
         const vec3 n = glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
-        add_triangle(tri, CornerNormals{n, n, n}, albedo);
+        add_triangle(tri, CornerNormals{n, n, n}, colour);
     }
 };
 

@@ -48,4 +48,10 @@ struct CornerNormals {
     vec3 a, b, c;
 };
 
+// A point of a surface and the surface's unit outward normal there.
+struct OnSurface {
+    point3 p;
+    vec3 n;
+};
+
 }  // namespace rt

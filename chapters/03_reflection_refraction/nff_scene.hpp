@@ -26,11 +26,11 @@ inline WhittedScene whitted_scene(const NffScene& nff)
     scene.shapes = shape_scene(nff, [](const NffMaterial& m) { return m.kd * m.rgb; });
     const auto material = [&](int index) { return whitted_material(nff.materials[index]); };
     for (const NffSphere& s : nff.spheres)
-        scene.sphere_materials.push_back(material(s.material));
+        scene.materials[ObjectKind::sphere].push_back(material(s.material));
     for (const NffTriangle& t : nff.triangles)
-        scene.triangle_materials.push_back(material(t.material));
+        scene.materials[ObjectKind::triangle].push_back(material(t.material));
     for (const NffCone& c : nff.cones)
-        scene.cone_materials.push_back(material(c.material));
+        scene.materials[ObjectKind::cone].push_back(material(c.material));
     scene.zenith = nff.background;
     scene.ambient = color(nff_ambient);
     // The sun shines from where the first light stands, seen from the point the view looks at, in

@@ -11,7 +11,6 @@
 
 #include "02_spheres_triangles/scene.hpp"
 
-#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -40,9 +39,7 @@ struct Sun {
 
 struct WhittedScene {
     ShapeScene shapes;  // geometry and diffuse colours (chapter 02); shapes.background is the sky at the horizon
-    std::vector<Material> sphere_materials;    // sphere_materials[k] is the material of shapes.spheres[k]
-    std::vector<Material> triangle_materials;  // and of shapes.triangles[k]
-    std::vector<Material> cone_materials;      // and of shapes.cones[k] (scene files only)
+    PerKind<Material> materials;  // materials[ObjectKind::sphere][k] is the material of shapes.spheres[k], and so on
     color zenith{0.0f};  // the sky straight up; it blends into shapes.background toward the horizon
     Sun sun;
     color ambient{0.0f};  // Whitted's I_a: the light that reaches every surface from everywhere
@@ -50,7 +47,7 @@ struct WhittedScene {
     // The material of the object a hit names (Hit::object: spheres first, then triangles, then cones).
     const Material& material(int object) const
     {
-        return per_kind(object_ref(shapes, object), sphere_materials, triangle_materials, cone_materials);
+        return materials[object_ref(shapes, object)];
     }
 
     // The diffuse colour of the object at point p: its albedo, or a checker square's colour.
@@ -59,15 +56,14 @@ struct WhittedScene {
     void add_sphere(const Sphere& sphere, const color& albedo, const Material& material)
     {
         shapes.add_sphere(sphere, albedo);
-        sphere_materials.push_back(material);
+        materials[ObjectKind::sphere].push_back(material);
     }
 
     // A flat triangle (its face normal at every corner).
     void add_triangle(const Triangle& tri, const color& albedo, const Material& material)
     {
         shapes.add_triangle(tri, albedo);
-        triangle_materials.push_back(material);
-        assert(shapes.triangles.size() == triangle_materials.size());
+        materials[ObjectKind::triangle].push_back(material);
     }
 };
 

@@ -3,13 +3,9 @@
 // brute force in chapters 04-06, a grid or a hierarchy from chapter 07 on, with the same answers.
 //
 // A ray that leaves a hit point (a shadow feeler here; reflected and refracted rays in chapter 03)
-// needs that point as exactly on the surface as float allows: the robust offset of EXERCISE 04.3
-// moves it by a few hundred units in the last place, which is only enough when its error is a few
-// units in the last place of its own coordinates. ray.at(t) is not: t carries the intersection
-// test's relative error (up to a few 1e-6 of the distance travelled, chapter 02's table), and a
-// point computed from an origin far away inherits that origin's rounding. So the point is computed
-// from the surface itself, as Wachter and Binder (Ray Tracing Gems ch. 6) and pbrt-v4 do: from the
-// barycentric weights on a triangle, and projected onto the sphere for a sphere.
+// needs that point as exactly on the surface as float allows, for the robust offset of EXERCISE
+// 04.3 to be enough: the object list's `surface` computes it from the surface itself, not from
+// ray.at(t) (chapter 02's surface_point.hpp says why).
 #pragma once
 
 #include "02_spheres_triangles/closest_hit.hpp"
@@ -34,21 +30,6 @@ inline const Accelerator& query_of(const LitScene& scene)
     return scene.accelerator ? *scene.accelerator : brute_force();
 }
 
-// The point of the sphere nearest p, which lies within rounding of the sphere (pbrt-v4's
-// reprojection, `Sphere::BasicIntersect`).
-inline point3 sphere_surface_point(const Sphere& sphere, const point3& p)
-{
-    return sphere.centre + sphere.radius * glm::normalize(p - sphere.centre);
-}
-
-// The hit point as the weighted sum of the corners: its error is a few ulps of the corners, the
-// form whose error Wachter and Binder's offset is sized for.
-inline point3 triangle_surface_point(const Triangle& tri, const TriangleHit<float>& hit)
-{
-    const float alpha = 1.0f - hit.beta - hit.gamma;
-    return alpha * tri.a + hit.beta * tri.b + hit.gamma * tri.c;
-}
-
 // The nearest hit over all spheres, triangles and cones with t strictly inside `range`, its point on
 // the surface and its normals: the sphere's and the cone's outward one, a triangle's face normal,
 // and for a smooth patch its corner normals interpolated as the shading normal n (ng stays the
@@ -57,27 +38,15 @@ inline point3 triangle_surface_point(const Triangle& tri, const TriangleHit<floa
 inline std::optional<Hit> closest_hit(const Ray& ray, const LitScene& scene, Interval range,
                                       const std::vector<bool>* one_sided = nullptr)
 {
+    const Objects objects = objects_of(scene, lit_tests, one_sided);
     ObjectHit h;
-    if (!query_of(scene).closest(ray, range, objects_of(scene, lit_tests, one_sided), h))
+    if (!query_of(scene).closest(ray, range, objects, h))
         return std::nullopt;
-    const ObjectRef o = object_ref(scene, h.object);
-    switch (o.kind) {
-    case ObjectKind::sphere: {
-        const Sphere& sphere = scene.spheres[o.index];
-        const point3 p = sphere_surface_point(sphere, ray.at(h.t));
-        return Hit{h.t, p, sphere_normal(sphere, p), h.object};
-    }
-    case ObjectKind::triangle: {
-        const Triangle& tri = scene.triangles[o.index];
-        const TriangleHit<float> on{h.t, h.beta, h.gamma};
-        const vec3 ng = face_normal(tri);
-        const CornerNormals* smooth = scene.smooth_normals(o.index);
-        return Hit{h.t, triangle_surface_point(tri, on), smooth ? interpolated_normal(*smooth, on) : ng, h.object, ng};
-    }
-    case ObjectKind::cone:
-        break;
-    }
-    const ConeSurfacePoint on = cone_surface(scene.cones[o.index], ray.at(h.t));
+    const OnSurface on = objects.surface(ray, h);
+    const ObjectRef o = objects.ref(h.object);
+    const CornerNormals* smooth = o.kind == ObjectKind::triangle ? scene.smooth_normals(o.index) : nullptr;
+    if (smooth)
+        return Hit{h.t, on.p, interpolated_normal(*smooth, {h.t, h.beta, h.gamma}), h.object, on.n};
     return Hit{h.t, on.p, on.n, h.object};
 }
 

@@ -37,15 +37,14 @@ struct PointLight {
 
 struct LitScene {
     std::vector<Sphere> spheres;
-    std::vector<int> sphere_material;    // sphere_material[k] indexes `materials` for spheres[k]
     std::vector<Triangle> triangles;
-    std::vector<int> triangle_material;
     // The corner normals of the smooth patches (NFF's `pp`), as chapter 02 shades them; a flat
     // triangle (none given, or a triangle added before any patch) is shaded with its face normal.
     std::vector<CornerNormals> triangle_normals;
     std::vector<bool> triangle_smooth;
     std::vector<Cone> cones;
-    std::vector<int> cone_material;
+    // material_indices[ObjectKind::sphere][k] indexes `materials` for spheres[k], and so on.
+    PerKind<int> material_indices;
     std::vector<PhongMaterial> materials;
 
     std::vector<PointLight> lights;
@@ -60,7 +59,7 @@ struct LitScene {
     // The index into `materials` of the object a hit names.
     int material_index(int object) const
     {
-        return per_kind(object_ref(*this, object), sphere_material, triangle_material, cone_material);
+        return material_indices[object_ref(*this, object)];
     }
 
     const PhongMaterial& material_of(int object) const { return materials[material_index(object)]; }
@@ -75,14 +74,14 @@ struct LitScene {
     {
         assert(material >= 0 && material < static_cast<int>(materials.size()));
         spheres.push_back(sphere);
-        sphere_material.push_back(material);
+        material_indices[ObjectKind::sphere].push_back(material);
     }
 
     void add_triangle(const Triangle& tri, int material)
     {
         assert(material >= 0 && material < static_cast<int>(materials.size()));
         triangles.push_back(tri);
-        triangle_material.push_back(material);
+        material_indices[ObjectKind::triangle].push_back(material);
     }
 
     // A triangle shaded smooth: its corners' normals interpolated at each hit (EXERCISE 02.6).
@@ -105,7 +104,7 @@ struct LitScene {
     {
         assert(material >= 0 && material < static_cast<int>(materials.size()));
         cones.push_back(cone);
-        cone_material.push_back(material);
+        material_indices[ObjectKind::cone].push_back(material);
     }
 };
 
