@@ -4,8 +4,10 @@
 # vcpkg have no pkg-config file for it), no OpenMP. Every target builds, every test passes but the
 # lessons' tables (their sweeps are minutes of work, and the test job holds them to the code).
 #
-# Catch2 v3 is built from its release tarball (RT_CATCH2_V3_SOURCE; by default the copy the CI
-# machine keeps beside the kit) into build/ci-libcxx/catch2-v3, with the same compiler and library.
+# Catch2 v3 is built from its release tarball (RT_CATCH2_V3_SOURCE; by default the first
+# Catch2-3*.tar.gz in a third_party folder of a directory beside the kit, where the CI machine keeps
+# upstream sources; Debian has no Catch2 v3 package) into build/ci-libcxx/catch2-v3, with the same
+# compiler and library.
 # Debian's Catch2 v2 headers stay on the default include path: the job hides them in a private
 # mount namespace (unshare), so a stray v2 include cannot pass unnoticed.
 set -euo pipefail
@@ -13,7 +15,8 @@ script="$(cd "$(dirname "$0")" && pwd)/$(basename "$0")"
 cd "$(dirname "$script")/../.."
 kit=$(pwd)
 work="$kit/build/ci-libcxx"
-source="${RT_CATCH2_V3_SOURCE:-$kit/../shared/third_party/Catch2-3.4.0.tar.gz}"
+found=$(ls "$kit"/../*/third_party/Catch2-3*.tar.gz 2>/dev/null | head -n 1 || true)
+source="${RT_CATCH2_V3_SOURCE:-$found}"
 
 if [ -z "${RT_V2_HIDDEN:-}" ]; then
   mkdir -p "$work"
