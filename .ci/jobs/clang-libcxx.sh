@@ -33,7 +33,7 @@ export PKG_CONFIG_LIBDIR="$work/no-pkgconfig" PKG_CONFIG_PATH=""
 
 prefix="$work/catch2-v3"
 if [ ! -f "$prefix/lib/cmake/Catch2/Catch2Config.cmake" ]; then
-  [ -f "$source" ] || { echo "clang-libcxx: no Catch2 v3 source at $source (set RT_CATCH2_V3_SOURCE)" >&2; exit 1; }
+  [ -f "$source" ] || { echo "clang-libcxx: no Catch2 v3 source at ${source:-../*/third_party/Catch2-3*.tar.gz beside the kit} (set RT_CATCH2_V3_SOURCE)" >&2; exit 1; }
   rm -rf "$work/catch2-src" "$work/catch2-build"
   mkdir -p "$work/catch2-src"
   tar xzf "$source" -C "$work/catch2-src" --strip-components=1
