@@ -4,6 +4,7 @@
 #include "common/random.hpp"
 #include "common/vec.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iomanip>
@@ -46,6 +47,8 @@ public:
     {
         out_ << "c\n" << xyz(base) << ' ' << base_r << '\n' << xyz(apex) << ' ' << apex_r << '\n';
     }
+    // NFF has no cylinder of its own: a cone whose two radii are equal, as SPD writes them.
+    void cylinder(const dvec3& a, const dvec3& b, double r) { cone(a, r, b, r); }
     void polygon(const std::vector<dvec3>& vertices)
     {
         out_ << "p " << vertices.size() << '\n';
@@ -237,6 +240,135 @@ constexpr std::uint64_t sticks_seed = 1987;
 constexpr double sticks_length = 0.9;  // against a pile 2 wide: each stick spans many grid cells
 constexpr double sticks_width = 0.012;
 
+// --- Gears ---
+
+// SPD's gears have 36 teeth, a multiple of 4: a tooth then points along each axis of the grid the
+// gears stand in, so turning every other gear half a tooth puts a gap opposite each tooth of its
+// neighbours, along rows and columns alike.
+constexpr int gear_teeth = 36;
+constexpr double gear_root_ratio = 0.88;  // the gaps' floor against the teeth's tips
+constexpr double gear_tip_half = 0.12;    // half a tooth's flat tip, in tooth pitches
+constexpr double gear_root_half = 0.22;   // half a gap's flat floor, in tooth pitches
+// Neighbours' centres this many tip radii apart: each tip stops 0.01 short of the other's gap
+// floor, and with the tips narrower than the gaps no corner comes nearer than 0.01 to a neighbour's
+// outline: no two gears touch or share a surface (SPD 2.3 moved its gears apart for that reason).
+constexpr double gear_spacing = 1.0 + gear_root_ratio + 0.01;
+constexpr double gear_thickness = 0.3;  // against the tip radius
+constexpr double gear_rise = 1.1;       // from one layer of gears to the next, against the tip radius
+
+// A gear's outline in the plane y = centre.y, its corners by increasing angle around y: so it faces
+// down (the NFF front is the side that sees it counterclockwise). Each tooth adds two corners at its
+// tip, then two at the floor of the gap after it: 4 x 36 corners, concave between the teeth.
+std::vector<dvec3> gear_outline(const dvec3& centre, double radius, double turn)
+{
+    const double pitch = 2.0 * pi / gear_teeth;
+    const double root = gear_root_ratio * radius;
+    const std::array<std::pair<double, double>, 4> corners = {{{-gear_tip_half, radius},
+                                                               {gear_tip_half, radius},
+                                                               {0.5 - gear_root_half, root},
+                                                               {0.5 + gear_root_half, root}}};
+    std::vector<dvec3> outline;
+    for (int k = 0; k < gear_teeth; ++k)
+        for (const auto& [offset, r] : corners) {
+            const double a = turn + pitch * (k + offset);
+            outline.push_back(centre + dvec3(r * std::cos(a), 0.0, r * std::sin(a)));
+        }
+    return outline;
+}
+
+// One gear lying flat, its bottom face at `base`: two faces of 144 corners and a quad for each edge
+// of the outline between them, each facing out of the gear.
+void gear(NffWriter& w, const dvec3& base, double radius, double turn)
+{
+    const dvec3 up(0.0, gear_thickness * radius, 0.0);
+    const std::vector<dvec3> bottom = gear_outline(base, radius, turn);
+    std::vector<dvec3> top(bottom.rbegin(), bottom.rend());  // reversed: faces up
+    for (dvec3& p : top)
+        p += up;
+    w.polygon(top);
+    w.polygon(bottom);
+    for (std::size_t k = 0; k < bottom.size(); ++k) {
+        const dvec3& a = bottom[k];
+        const dvec3& b = bottom[(k + 1) % bottom.size()];
+        w.polygon({a + up, b + up, b, a});
+    }
+}
+
+// --- Rings ---
+
+// Six pentagonal rings around one centre, each square to one of the six axes through an
+// icosahedron's opposite corners: SPD's rings join the midpoints of a dodecahedron's edges, the
+// same symmetry, so from any side the rings cross one another and hide what lies behind.
+std::array<dvec3, 6> ring_axes()
+{
+    const double g = 0.5 * (1.0 + std::sqrt(5.0));  // the golden ratio: an icosahedron's corners
+    const std::array<dvec3, 6> corners = {
+        dvec3(0.0, 1.0, g), dvec3(0.0, 1.0, -g), dvec3(1.0, g, 0.0),
+        dvec3(1.0, -g, 0.0), dvec3(g, 0.0, 1.0), dvec3(-g, 0.0, 1.0)};
+    std::array<dvec3, 6> axes;
+    for (std::size_t k = 0; k < axes.size(); ++k)
+        axes[k] = glm::normalize(corners[k]);
+    return axes;
+}
+
+// Against the distance between neighbouring objects: a ring's corners stand 0.44 from its centre
+// and its tube is 0.03 thick, so an object fits in a ball of radius 0.47 and neighbours never touch.
+constexpr double ring_corner = 0.44;
+constexpr double ring_tube = 0.03;
+
+// A ring: a sphere at each of its five corners, a cylinder along each edge between them.
+void pentagon_ring(NffWriter& w, const dvec3& centre, const dvec3& axis, double corner, double tube)
+{
+    for (int k = 0; k < 5; ++k) {
+        const dvec3 a = centre + corner * around(axis, 72.0 * k, 0.0);
+        const dvec3 b = centre + corner * around(axis, 72.0 * (k + 1), 0.0);
+        w.sphere(a, tube);
+        w.cylinder(a, b, tube);
+    }
+}
+
+// The objects' centres, a square pyramid `levels` high stacked like cannonballs: n x n at the
+// bottom, each level above one fewer a side, resting in the hollows of the one below.
+std::vector<dvec3> ring_pyramid(int levels, double spacing)
+{
+    std::vector<dvec3> centres;
+    for (int level = 0; level < levels; ++level) {
+        const int side = levels - level;
+        const double y = 0.5 * spacing + level * spacing / std::sqrt(2.0);
+        for (int j = 0; j < side; ++j)
+            for (int i = 0; i < side; ++i)
+                centres.emplace_back((i - 0.5 * (side - 1)) * spacing, y, (j - 0.5 * (side - 1)) * spacing);
+    }
+    return centres;
+}
+
+// --- Lattice ---
+
+// Against the lattice's spacing: joints a fifth of it, rods 0.06, thin enough that the eye sees
+// through the lattice to its far side, as in SPD's.
+constexpr double lattice_joint = 0.2;
+constexpr double lattice_rod = 0.06;
+
+// The rods along one axis: from each joint to the next, starting and stopping just inside the two
+// joints (where the rod's rim is still inside the ball), so no rod shows a bare end and none
+// reaches the far side of a joint.
+void lattice_rods(NffWriter& w, int cells, double spacing, const dvec3& origin, int axis)
+{
+    const double joint = lattice_joint * spacing, rod = lattice_rod * spacing;
+    const double inset = 0.95 * std::sqrt(joint * joint - rod * rod);
+    dvec3 along(0.0);
+    along[axis] = 1.0;
+    for (int i = 0; i <= cells; ++i)
+        for (int j = 0; j <= cells; ++j)
+            for (int k = 0; k <= cells; ++k) {
+                const dvec3 index(i, j, k);
+                if (index[axis] == cells)
+                    continue;
+                const dvec3 p = origin + spacing * index;
+                w.cylinder(p + inset * along, p + (spacing - inset) * along, rod);
+            }
+}
+
 // The lights and view every generated scene shares, framing an object `size` across whose base
 // stands at the origin.
 void stage(NffWriter& w, double size, double height)
@@ -393,10 +525,88 @@ void write_stadium(std::ostream& out, int depth)
     }
 }
 
+void write_gears(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("gears, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    // (depth + 1)^3 gears, as SPD's size factor depth + 1 has: layers of (depth + 1)^2 meshing
+    // gears, one above another, the whole 2 wide whatever the depth.
+    const int n = depth + 1;
+    const double width = 2.0;
+    const double radius = width / ((n - 1) * gear_spacing + 2.0);
+    const double lift = 0.5 * radius;  // the lowest layer's gap to the floor
+    stage(w, 1.5, lift + ((n - 1) * gear_rise + gear_thickness) * radius);
+    w.material(dvec3(0.9, 0.85, 0.75), 0.7, 0.3, 30.0);  // a floor that mirrors a little, as SPD's
+    w.floor(0.0, 5.0);
+    const dvec3 colours[5] = {{0.85, 0.55, 0.2}, {0.7, 0.7, 0.75}, {0.8, 0.3, 0.2}, {0.3, 0.5, 0.8}, {0.85, 0.75, 0.3}};
+    for (int layer = 0; layer < n; ++layer)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                // Neighbours differ in colour (i + 2j + 3 layer changes by 1, 2 or 3 mod 5), and
+                // every other gear turns half a tooth so that the teeth of neighbours interleave.
+                w.material(colours[(i + 2 * j + 3 * layer) % 5], 0.7, 0.3, 40.0);
+                const dvec3 base(-0.5 * width + radius + i * gear_spacing * radius,
+                                 lift + layer * gear_rise * radius,
+                                 -0.5 * width + radius + j * gear_spacing * radius);
+                gear(w, base, radius, (i + j + layer) % 2 == 0 ? 0.0 : pi / gear_teeth);
+            }
+}
+
+void write_rings(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("rings, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    // A pyramid depth + 1 levels high, as SPD's size factor depth + 1 has, its base 2 wide whatever
+    // the depth.
+    const int levels = depth + 1;
+    const double spacing = 2.0 / levels;
+    const std::vector<dvec3> centres = ring_pyramid(levels, spacing);
+    stage(w, 1.4, centres.back().y + 0.5 * spacing);
+    w.material(dvec3(0.9, 0.9, 0.9), 0.9, 0.1, 10.0);
+    w.floor(0.0, 5.0);
+    // Each of the six rings of every object takes the same colour (SPD's six colours too), so one
+    // material line serves a sixth of the scene.
+    const dvec3 colours[6] = {{0.9, 0.2, 0.15}, {0.2, 0.75, 0.25}, {0.2, 0.35, 0.9},
+                              {0.2, 0.8, 0.8},  {0.85, 0.25, 0.8}, {0.95, 0.85, 0.2}};
+    const std::array<dvec3, 6> axes = ring_axes();
+    for (std::size_t r = 0; r < axes.size(); ++r) {
+        w.material(colours[r], 0.5, 0.5, 40.0);
+        for (const dvec3& c : centres)
+            pentagon_ring(w, c, axes[r], ring_corner * spacing, ring_tube * spacing);
+    }
+}
+
+void write_lattice(std::ostream& out, int depth)
+{
+    NffWriter w(out);
+    w.comment("lattice, depth " + std::to_string(depth) + ", by nff_generate (the kit's own)");
+    // depth cells a side, as SPD's size factor depth has: a cube 2 wide whatever the depth (one
+    // joint alone at depth 0).
+    const int cells = depth;
+    const double spacing = 2.0 / std::max(cells, 1);
+    const double lift = 0.3;  // the lowest joints' height above the floor
+    const dvec3 origin(-1.0, lift, -1.0);
+    stage(w, 2.0, lift + 2.0);
+    w.material(dvec3(0.6, 0.6, 0.6), 0.9, 0.0, 0.0);
+    w.floor(0.0, 6.0);
+    // Shiny joints, matte rods coloured by their axis, as SPD's lattice has them.
+    w.material(dvec3(0.9, 0.9, 0.9), 0.5, 0.5, 40.0);
+    for (int i = 0; i <= cells; ++i)
+        for (int j = 0; j <= cells; ++j)
+            for (int k = 0; k <= cells; ++k)
+                w.sphere(origin + spacing * dvec3(i, j, k), lattice_joint * spacing);
+    const dvec3 colours[3] = {{0.85, 0.15, 0.1}, {0.15, 0.75, 0.2}, {0.15, 0.3, 0.85}};
+    for (int axis = 0; axis < 3; ++axis) {
+        w.material(colours[axis], 0.9, 0.0, 0.0);
+        lattice_rods(w, cells, spacing, origin, axis);
+    }
+}
+
 const std::vector<NffGenerator>& nff_generators()
 {
-    // Depth limits: 597871 spheres, 262144 triangles, 88573 cones, 524288 triangles; each file tens of
-    // megabytes.
+    // Depth limits: 597871 spheres, 262144 triangles, 88573 cones, 524288 triangles; gears 572000
+    // triangles in 1000 gears, rings 165750 spheres and as many cylinders, lattice 132651 spheres and
+    // 390150 cylinders; each file tens of megabytes (gears 27, rings 19, lattice 25).
     static const std::vector<NffGenerator> generators = {
         {"sphereflake", "a sphere with nine smaller spheres on it, recursively (SPD's balls)", 3, 6, write_sphereflake},
         {"pyramid", "a tetrahedron of four half-size tetrahedra, recursively (SPD's tetra)", 4, 8, write_pyramid},
@@ -404,6 +614,9 @@ const std::vector<NffGenerator>& nff_generators()
         {"mountain", "a fractal terrain of 2 x 4^depth triangles with four balls (SPD's mount)", 6, 9, write_mountain},
         {"sticks", "250 x 2^depth long thin triangles in a pile, each across many grid cells", 4, 12, write_sticks},
         {"stadium", "a small dense mesh (20 x 4^depth triangles) in a huge sparse stadium: the teapot in a stadium", 5, 8, write_stadium},
+        {"gears", "(depth+1)^3 meshing gears, faces of 144 corners, concave (SPD's gears)", 3, 9, write_gears},
+        {"rings", "a pyramid of balls of six pentagonal rings: spheres and cylinders (SPD's rings)", 6, 24, write_rings},
+        {"lattice", "a cube of depth^3 cells: joints (spheres) and rods (cylinders) (SPD's lattice)", 12, 50, write_lattice},
     };
     return generators;
 }
