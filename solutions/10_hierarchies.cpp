@@ -113,15 +113,17 @@ bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& ob
     if (bvh.nodes.empty() || !valid_ray(ray))
         return false;
     const RaySlabs slabs(ray);
+    // What could still beat the best hit: up to and including best.t (a lower-numbered object may
+    // tie), so its end moves only when the best does.
+    Interval reach = range;
+    ObjectHit best;
+    bool found = false;
     std::uint32_t stack[bvh_stack_size];
     int top = 0;
     stack[top++] = 0;
-    ObjectHit best;
-    bool found = false;
     while (top > 0) {
         const BvhNode& node = bvh.nodes[stack[--top]];
         count(Counter::nodes_visited);
-        const Interval reach{range.min, found ? std::nextafter(best.t, infinity) : range.max};
         if (!slab_interval(node.bounds(), slabs, reach))
             continue;
         if (node.count > 0) {
@@ -135,6 +137,7 @@ bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& ob
                         hit = best;
                         return true;
                     }
+                    reach.max = std::nextafter(best.t, infinity);
                 }
             }
             continue;
