@@ -84,14 +84,19 @@ constexpr float gamma_3 = 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
 constexpr float slab_far_widening = 1.0f + 2.0f * gamma_3;
 
 // What the slab test needs of a ray, computed once per ray: 1 / d_i, +infinity for a zero
-// component. A -0 is made +0 first (-0 + 0 is +0 in IEEE arithmetic): 1 / -0 = -infinity would
-// turn the NaN of an origin on the box's max face into a t_near of +infinity, and a ray lying in
-// that face would miss the box along -0 and hit it along +0.
+// component (a -0 made +0 first: -0 + 0 is +0 in IEEE arithmetic), and which of each slab's two
+// planes the ray meets first, by the sign of 1 / d_i. Chosen by the sign, a slab whose t is NaN
+// (0 * infinity: an origin on a face, d_i = 0) leaves the interval alone whichever plane it is.
 struct RaySlabs {
     point3 origin;
     vec3 inv_dir;
+    bool down[3];  // 1 / d_i < 0: the ray meets the max plane of slab i first
 
-    explicit RaySlabs(const Ray& ray) : origin(ray.origin), inv_dir(1.0f / (ray.dir + vec3(0.0f))) {}
+    explicit RaySlabs(const Ray& ray) : origin(ray.origin), inv_dir(1.0f / (ray.dir + vec3(0.0f)))
+    {
+        for (int i = 0; i < 3; ++i)
+            down[i] = inv_dir[i] < 0.0f;
+    }
 };
 
 // The part of `range` where the ray is inside the box, or nothing when the ray misses it (or only
@@ -101,20 +106,20 @@ inline std::optional<Interval> slab_interval(const Bounds& box, const RaySlabs& 
 {
     float t0 = range.min, t1 = range.max;
     for (int i = 0; i < 3; ++i) {
-        float t_near = (box.min[i] - ray.origin[i]) * ray.inv_dir[i];
-        float t_far = (box.max[i] - ray.origin[i]) * ray.inv_dir[i];
-        if (t_near > t_far) {
-            const float swap = t_near;
-            t_near = t_far;
-            t_far = swap;
-        }
-        t_far *= slab_far_widening;
+        // The near plane chosen by the ray's sign, not by comparing the two t: a choice the same for
+        // every box, where a comparison is a branch taken either way box after box.
+        const float near_plane = ray.down[i] ? box.max[i] : box.min[i];
+        const float far_plane = ray.down[i] ? box.min[i] : box.max[i];
+        const float t_near = (near_plane - ray.origin[i]) * ray.inv_dir[i];
+        const float t_far = (far_plane - ray.origin[i]) * ray.inv_dir[i] * slab_far_widening;
         // Written so that a NaN (0 * inf: an origin on the face, d_i = 0) leaves t0 and t1 alone.
         t0 = t_near > t0 ? t_near : t0;
         t1 = t_far < t1 ? t_far : t1;
-        if (t0 > t1)
-            return std::nullopt;
     }
+    // One test after all three slabs, not one per slab: t0 only grows and t1 only shrinks, so the
+    // answer is the same, and a branch the processor cannot predict is taken once, not three times.
+    if (t0 > t1)
+        return std::nullopt;
     return Interval{t0, t1};
 }
 
