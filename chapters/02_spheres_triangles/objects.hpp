@@ -112,12 +112,12 @@ struct Objects {
         }
         case ObjectKind::triangle: {
             const Triangle& tri = triangles[o.index];
-            const std::optional<TriangleHit<float>> h = hit_triangle(ray, tri, range, tests.triangle);
-            if (!h)
+            TriangleHit<float> h;
+            if (!hit_triangle(ray, tri, range, tests.triangle, h))
                 return false;
             if (one_sided && (*one_sided)[o.index] && glm::dot(face_normal(tri), ray.dir) > 0.0f)
                 return false;  // its back
-            hit = {h->t, k, h->beta, h->gamma};
+            hit = {h.t, k, h.beta, h.gamma};
             return true;
         }
         case ObjectKind::cone:
