@@ -40,7 +40,10 @@ struct ShapeScene {
     // A triangle shaded with its corners' normals.
     void add_triangle(const Triangle& tri, const CornerNormals& normals, const color& colour)
     {
-        assert(triangles.size() == corner_normals.size());
+        // The add_ functions are the only writers of the shape arrays and their lists: each list
+        // stays as long as its array.
+        assert(spheres.size() == albedo[ObjectKind::sphere].size() && triangles.size() == corner_normals.size() &&
+               triangles.size() == albedo[ObjectKind::triangle].size());
         triangles.push_back(tri);
         corner_normals.push_back(normals);
         albedo[ObjectKind::triangle].push_back(colour);

@@ -11,6 +11,7 @@
 
 #include "02_spheres_triangles/scene.hpp"
 
+#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -62,6 +63,7 @@ struct WhittedScene {
     // A flat triangle (its face normal at every corner).
     void add_triangle(const Triangle& tri, const color& albedo, const Material& material)
     {
+        assert(shapes.triangles.size() == materials[ObjectKind::triangle].size());
         shapes.add_triangle(tri, albedo);
         materials[ObjectKind::triangle].push_back(material);
     }
