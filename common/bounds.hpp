@@ -84,8 +84,9 @@ constexpr float gamma_3 = 3.0f * 0x1p-24f / (1.0f - 3.0f * 0x1p-24f);
 constexpr float slab_far_widening = 1.0f + 2.0f * gamma_3;
 
 // What the slab test needs of a ray, computed once per ray: 1 / d_i, +infinity for a zero
-// component (a -0 made +0 first: -0 + 0 is +0 in IEEE arithmetic), and which of each slab's two
-// planes the ray meets first, by the sign of 1 / d_i. Chosen by the sign, a slab whose t is NaN
+// component (a -0 made +0 first, -0 + 0 being +0 in IEEE arithmetic, so that a ray along no axis
+// i always counts as going up it), and which of each slab's two planes the ray meets first, by the
+// sign of 1 / d_i. Chosen by the sign, a slab whose t is NaN
 // (0 * infinity: an origin on a face, d_i = 0) leaves the interval alone whichever plane it is.
 struct RaySlabs {
     point3 origin;

@@ -12,8 +12,6 @@
 #include "02_spheres_triangles/02_spheres_triangles.hpp"
 #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include <cmath>
 #include <initializer_list>
 #include <utility>

@@ -19,8 +19,9 @@
 #include "02_spheres_triangles/02_spheres_triangles.hpp"
 // STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
 
-#include <glm/gtc/type_ptr.hpp>
-
+// SOLUTION BEGIN
+#include <glm/gtc/type_ptr.hpp>  // glm::value_ptr: 02.5 reads each vector in the ray's frame
+// SOLUTION END
 #include <cmath>
 #include <initializer_list>
 #include <utility>
