@@ -5,6 +5,7 @@
 #include "08_mailboxing/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "10_hierarchies/figure.hpp"
+#include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
 
 #include <functional>
@@ -33,6 +34,7 @@ std::vector<Structure> structures()
         {"hierarchy of grids", ch07::default_lambda,
          [](const Objects& o, float l) { return std::make_unique<HGridAccel>(o, HGridSettings{l}); }},
         {"BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<BvhAccel>(o, BvhSettings{}); }},
+        {"4-wide BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<WideBvhAccel>(o, BvhSettings{}); }},
     };
 }
 

@@ -1,0 +1,261 @@
+// The next step after 10.4 (given): the same tree, four children to a node, their four boxes tested
+// at once.
+//
+// A binary tree tested one box at a time spends most of a query stepping from node to node: about
+// 66 instructions a visit, 36 of them the slab test ("Where a query's time goes" in the lesson).
+// Production tracers (Embree: Wald et al., "Embree: A Kernel Framework for Efficient CPU Ray
+// Tracing", 2014; Dammertz et al., "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing
+// of Incoherent Rays", 2008) make the tree four or eight wide: a node's children's boxes lie in
+// arrays of four, one per plane (all four min x, then all four min y, ...), so one pass of the
+// slab test runs the same instructions on four boxes, and the compiler makes each of them one
+// 4-wide vector instruction (SSE on x86, NEON on ARM). A query makes about half the steps.
+//
+// The tree is your BVH (10.1-10.3), collapsed: each wide node takes a binary node's two children,
+// and opens the largest of them that is not a leaf (by surface area, the child a ray is likeliest
+// to enter) until it has four. The leaves are the binary tree's, so every box a ray enters here is
+// a box the binary traversal would test, with the same robust slab test (common/bounds.hpp): the
+// answers are brute force's, bit for bit, as 10.4's are.
+#pragma once
+
+#include "10_hierarchies/bvh.hpp"
+
+#include <cstdint>
+#include <vector>
+
+// SSE on every x86-64 compiler (GCC, Clang, MSVC); elsewhere (ARM: Apple silicon) the same test
+// lane by lane in plain C++. RT_WIDE_SCALAR forces the plain one, so a test can check both agree.
+#if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64))
+#define RT_WIDE_SSE 1
+#include <xmmintrin.h>
+#else
+#define RT_WIDE_SSE 0
+#endif
+
+namespace rt {
+
+// A node of four children, 128 bytes (two cache lines): each child's box, plane by plane, four to
+// an array; and what the child is: a leaf (count > 0: object_index[first .. first + count) of the
+// binary tree), another wide node (count == 0: nodes[first]), or nothing (an empty box, which no
+// ray enters: its min is +infinity and its max -infinity, so t_near is +infinity on every axis).
+struct alignas(64) WideNode {
+    float min[3][4];
+    float max[3][4];
+    std::uint32_t first[4];
+    std::uint32_t count[4];
+};
+static_assert(sizeof(WideNode) == 128, "a wide node is two cache lines");
+
+struct WideBvh {
+    std::vector<WideNode> nodes;  // nodes[0] is the root
+    std::vector<std::uint32_t> object_index;
+};
+
+// A wide node has up to four children on the stack, each pushed once per level: a path of at most
+// bvh_stack_size binary levels pushes fewer than 3 entries a level, plus the root.
+constexpr int wide_stack_size = 3 * bvh_stack_size + 1;
+
+// The slab test of common/bounds.hpp on the node's four boxes at once: the same formula, the
+// same order of operations, so each box is entered exactly when slab_interval would enter it.
+// Returns a bit a box entered (bit i: child i), with where the ray enters it in t0_out[i]. SSE's max and min return their second
+// operand when either is NaN, as the scalar test's `t_near > t0 ? t_near : t0` keeps t0: a NaN
+// slab (an origin on a face, d_i = 0) leaves the interval alone.
+inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interval reach, float t0_out[4])
+{
+#if RT_WIDE_SSE
+    __m128 t0 = _mm_set1_ps(reach.min), t1 = _mm_set1_ps(reach.max);
+    const __m128 widening = _mm_set1_ps(slab_far_widening);
+    for (int a = 0; a < 3; ++a) {
+        const __m128 near_plane = _mm_load_ps(slabs.down[a] ? node.max[a] : node.min[a]);
+        const __m128 far_plane = _mm_load_ps(slabs.down[a] ? node.min[a] : node.max[a]);
+        const __m128 o = _mm_set1_ps(slabs.origin[a]), inv = _mm_set1_ps(slabs.inv_dir[a]);
+        const __m128 t_near = _mm_mul_ps(_mm_sub_ps(near_plane, o), inv);
+        const __m128 t_far = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, o), inv), widening);
+        t0 = _mm_max_ps(t_near, t0);
+        t1 = _mm_min_ps(t_far, t1);
+    }
+    _mm_storeu_ps(t0_out, t0);
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, t1)));
+#else
+    float t0[4], t1[4];
+    for (int i = 0; i < 4; ++i) {
+        t0[i] = reach.min;
+        t1[i] = reach.max;
+    }
+    for (int a = 0; a < 3; ++a) {
+        const float* near_plane = slabs.down[a] ? node.max[a] : node.min[a];
+        const float* far_plane = slabs.down[a] ? node.min[a] : node.max[a];
+        const float o = slabs.origin[a], inv = slabs.inv_dir[a];
+        for (int i = 0; i < 4; ++i) {
+            const float t_near = (near_plane[i] - o) * inv;
+            const float t_far = (far_plane[i] - o) * inv * slab_far_widening;
+            t0[i] = t_near > t0[i] ? t_near : t0[i];
+            t1[i] = t_far < t1[i] ? t_far : t1[i];
+        }
+    }
+    unsigned entered = 0;
+    for (int i = 0; i < 4; ++i) {
+        t0_out[i] = t0[i];
+        entered |= (t0[i] > t1[i] ? 0u : 1u) << i;
+    }
+    return entered;
+#endif
+}
+
+class WideBvhAccel final : public Accelerator {
+public:
+    explicit WideBvhAccel(const Objects& objects, const BvhSettings& settings = {})
+    {
+        const Timer timer;
+        const BvhAccel binary(objects, settings);
+        const Bvh& b = binary.bvh();
+        tree_.object_index = b.object_index;
+        if (!b.nodes.empty()) {
+            if (b.nodes[0].count > 0)
+                collapse_leaf_root(b.nodes[0]);
+            else
+                collapse(b, 0);
+        }
+        bytes_ = tree_.nodes.size() * sizeof(WideNode) + tree_.object_index.size() * sizeof(std::uint32_t);
+        build_seconds_ = timer.seconds();
+    }
+
+    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        return query(ray, range, objects, false, hit);
+    }
+    bool any(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        ObjectHit hit;
+        return query(ray, range, objects, true, hit);
+    }
+    std::size_t bytes() const override { return bytes_; }
+    void report(std::ostream& out) const override
+    {
+        out << "wide_nodes=" << tree_.nodes.size() << '\n'
+            << "bytes=" << bytes_ << '\n'
+            << "build_seconds=" << build_seconds_ << '\n';
+    }
+    const WideBvh& tree() const { return tree_; }
+
+private:
+    static void set_child(WideNode& w, int i, const Bounds& box, std::uint32_t first, std::uint32_t count)
+    {
+        for (int a = 0; a < 3; ++a) {
+            w.min[a][i] = box.min[a];
+            w.max[a][i] = box.max[a];
+        }
+        w.first[i] = first;
+        w.count[i] = count;
+    }
+
+    static WideNode empty_node()
+    {
+        WideNode w{};
+        for (int i = 0; i < 4; ++i)
+            set_child(w, i, Bounds{}, 0, 0);
+        return w;
+    }
+
+    void collapse_leaf_root(const BvhNode& leaf)
+    {
+        tree_.nodes.push_back(empty_node());
+        set_child(tree_.nodes[0], 0, leaf.bounds(), leaf.first, leaf.count);
+    }
+
+    // The wide node for binary inner node `n`; returns its number.
+    std::uint32_t collapse(const Bvh& b, std::uint32_t n)
+    {
+        const auto self = static_cast<std::uint32_t>(tree_.nodes.size());
+        tree_.nodes.push_back(empty_node());
+        std::uint32_t children[4] = {n + 1, b.nodes[n].first};
+        int k = 2;
+        while (k < 4) {
+            int open = -1;
+            for (int i = 0; i < k; ++i)
+                if (b.nodes[children[i]].count == 0 &&
+                    (open < 0 || b.nodes[children[i]].bounds().half_area() > b.nodes[children[open]].bounds().half_area()))
+                    open = i;
+            if (open < 0)
+                break;
+            const std::uint32_t c = children[open];
+            children[open] = c + 1;
+            children[k++] = b.nodes[c].first;
+        }
+        for (int i = 0; i < k; ++i) {
+            const BvhNode& c = b.nodes[children[i]];
+            const std::uint32_t first = c.count > 0 ? c.first : collapse(b, children[i]);
+            set_child(tree_.nodes[self], i, c.bounds(), first, c.count);
+        }
+        return self;
+    }
+
+    bool query(const Ray& ray, Interval range, const Objects& objects, bool any_hit, ObjectHit& hit) const
+    {
+        if (tree_.nodes.empty() || !valid_ray(ray))
+            return false;
+        const RaySlabs slabs(ray);
+        Interval reach = range;
+        ObjectHit best;
+        bool found = false;
+        struct Entry {
+            std::uint32_t first, count;
+            float t;  // where the ray enters the child's box
+        };
+        Entry stack[wide_stack_size];
+        int top = 0;
+        Entry e{0, 0, range.min};
+        for (;;) {
+            if (e.count > 0) {
+                for (std::uint32_t j = 0; j < e.count; ++j) {
+                    const int k = static_cast<int>(tree_.object_index[e.first + j]);
+                    ObjectHit h;
+                    if (objects.intersect(k, ray, closer_than(range, best, k), h)) {
+                        best = h;
+                        found = true;
+                        if (any_hit) {
+                            hit = best;
+                            return true;
+                        }
+                        reach.max = std::nextafter(best.t, infinity);
+                    }
+                }
+            } else {
+                const WideNode& node = tree_.nodes[e.first];
+                count(Counter::nodes_visited);
+                float t0[4];
+                const unsigned entered = enter_boxes(node, slabs, reach, t0);
+                if (entered != 0) {
+                    // The children entered, pushed far to near; the nearest is taken at once.
+                    const int base = top;
+                    for (int i = 0; i < 4; ++i) {
+                        if (!(entered >> i & 1u))
+                            continue;
+                        const Entry c{node.first[i], node.count[i], t0[i]};
+                        int j = top++;
+                        for (; j > base && stack[j - 1].t < c.t; --j)
+                            stack[j] = stack[j - 1];
+                        stack[j] = c;
+                    }
+                    e = stack[--top];
+                    continue;
+                }
+            }
+            // The next child on the stack, passing over those that lie beyond a hit found since
+            // they were pushed.
+            do {
+                if (top == 0) {
+                    if (found)
+                        hit = best;
+                    return found;
+                }
+                e = stack[--top];
+            } while (e.t > reach.max);
+        }
+    }
+
+    WideBvh tree_;
+    std::size_t bytes_ = 0;
+    double build_seconds_ = 0.0;
+};
+
+}  // namespace rt

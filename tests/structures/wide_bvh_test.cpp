@@ -1,0 +1,204 @@
+// The 4-wide BVH (chapter 10's wide_bvh.hpp, given): the binary tree collapsed four children to a
+// node must keep every leaf once and every box as it was, and answer every ray as brute force does
+// (object and t, bit for bit). Compiled twice: with the SSE test of the four boxes where the
+// processor has it, and with RT_WIDE_SCALAR, the plain C++ one other processors run.
+#include "10_hierarchies/figure.hpp"
+#include "10_hierarchies/wide_bvh.hpp"
+#include "tests/ch07/agreement.hpp"
+#include "tests/ch10/closed_sphere.hpp"
+
+#include <filesystem>
+#include <map>
+#include <utility>
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::agreement;
+
+namespace {
+
+#if RT_WIDE_SSE
+const char* const lanes = "SSE";
+#else
+const char* const lanes = "plain C++";
+#endif
+
+Build wide(int leaf_size)
+{
+    return {"the 4-wide BVH (leaves of " + std::to_string(leaf_size) + ", " + lanes + ")",
+            [leaf_size](const Objects& objects, float) {
+                BvhSettings s;
+                s.leaf_size = leaf_size;
+                return std::make_unique<WideBvhAccel>(objects, s);
+            }};
+}
+
+Bounds child_box(const WideNode& w, int i)
+{
+    Bounds b;
+    for (int a = 0; a < 3; ++a) {
+        b.min[a] = w.min[a][i];
+        b.max[a] = w.max[a][i];
+    }
+    return b;
+}
+
+bool same_box(const Bounds& a, const Bounds& b) { return a.min == b.min && a.max == b.max; }
+
+}  // namespace
+
+TEST_CASE("the 4-wide BVH answers every ray as brute force does, on the kit's scenes and generated ones", "[structures]")
+{
+    INFO("the four boxes tested with " << lanes);
+    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
+        if (entry.path().extension() == ".nff") {
+            check_scene(wide(4), read_nff(entry.path().string()), 400);
+            check_scene(wide(1), read_nff(entry.path().string()), 200);
+        }
+    check_scene(wide(4), generated_scene(write_stadium, 2, "stadium 2"), 600);
+    check_scene(wide(4), generated_scene(write_sticks, 1, "sticks 1"), 600);
+    check_scene(wide(1), generated_scene(write_tree, 3, "tree 3"), 400);
+}
+
+TEST_CASE("the 4-wide BVH answers as brute force does on ties, a huge floor and far from the origin", "[structures]")
+{
+    INFO("the four boxes tested with " << lanes);
+    check_hard_cases(wide(4));
+    check_hard_cases(wide(1));
+}
+
+TEST_CASE("the four boxes of a wide node are entered exactly when the slab test enters each one", "[structures]")
+{
+    // Boxes and rays on a coarse lattice, so that origins lie on faces (with d_i = 0: a NaN slab, or
+    // +0 and -0), rays graze edges and corners, and boxes are flat or empty; ranges that end on a
+    // face. Every box must be entered, at the same t, exactly when slab_interval enters it; an empty
+    // slot (min +infinity, max -infinity) never is.
+    Rng rng(77, 2);
+    const auto lattice = [&] { return static_cast<float>(static_cast<int>(rng.next_float() * 7.0f) - 3); };
+    int checked = 0, entered = 0;
+    for (int k = 0; k < 50000; ++k) {
+        WideNode node{};
+        Bounds boxes[4];
+        for (int i = 0; i < 4; ++i) {
+            if (rng.next_float() < 0.1f) {
+                boxes[i] = Bounds{};  // an empty slot
+            } else {
+                const point3 p(lattice(), lattice(), lattice()), q(lattice(), lattice(), lattice());
+                boxes[i] = {glm::min(p, q), glm::max(p, q)};
+            }
+            for (int a = 0; a < 3; ++a) {
+                node.min[a][i] = boxes[i].min[a];
+                node.max[a][i] = boxes[i].max[a];
+            }
+        }
+        vec3 d(lattice(), lattice(), lattice());
+        if (rng.next_float() < 0.2f)
+            d[static_cast<int>(rng.next_float() * 3.0f)] = rng.next_float() < 0.5f ? 0.0f : -0.0f;
+        if (d == vec3(0.0f))
+            continue;
+        const Ray ray{point3(lattice(), lattice(), lattice()), glm::normalize(d)};
+        const Interval reach{rng.next_float() < 0.5f ? 0.0f : 1.0f, rng.next_float() < 0.5f ? infinity : 2.0f};
+        const RaySlabs slabs(ray);
+        float t0[4];
+        const unsigned got = enter_boxes(node, slabs, reach, t0);
+        for (int i = 0; i < 4; ++i) {
+            const std::optional<Interval> want = slab_interval(boxes[i], slabs, reach);
+            const bool in = got >> i & 1u;
+            INFO(show(ray) << ", t in (" << reach.min << ", " << reach.max << "), box " << show(boxes[i].min) << " to "
+                 << show(boxes[i].max) << " (" << lanes << "): the slab test says "
+                 << (want ? "entered at t = " + std::to_string(want->min) : std::string("missed")) << ", the wide test "
+                 << (in ? "entered at t = " + std::to_string(t0[i]) : std::string("missed")));
+            REQUIRE(in == want.has_value());
+            if (in)
+                REQUIRE(t0[i] == want->min);
+            ++checked;
+            entered += in;
+        }
+    }
+    INFO(entered << " of " << checked << " boxes entered");
+    CHECK(entered > checked / 10);
+    CHECK(entered < checked);
+}
+
+TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once, with its box", "[structures]")
+{
+    const LitScene scene = lit_scene(generated_scene(write_tree, 4, "tree 4"));
+    const Objects objects = objects_of(scene, lit_tests);
+    for (const int leaf_size : {1, 4}) {
+        BvhSettings s;
+        s.leaf_size = leaf_size;
+        const BvhAccel binary(objects, s);
+        const WideBvhAccel wide(objects, s);
+        // The binary leaves by their first object: each must appear once, with the same count and box.
+        std::map<std::uint32_t, std::pair<std::uint32_t, Bounds>> leaves;
+        for (const BvhNode& n : binary.bvh().nodes)
+            if (n.count > 0)
+                leaves[n.first] = {n.count, n.bounds()};
+        const WideBvh& w = wide.tree();
+        std::vector<int> referenced(w.nodes.size(), 0);
+        std::map<std::uint32_t, int> seen;
+        int empty_slots = 0;
+        for (const WideNode& node : w.nodes)
+            for (int i = 0; i < 4; ++i) {
+                const Bounds box = child_box(node, i);
+                if (box.empty()) {
+                    ++empty_slots;
+                    continue;
+                }
+                if (node.count[i] == 0) {
+                    REQUIRE(node.first[i] < w.nodes.size());
+                    ++referenced[node.first[i]];
+                    continue;
+                }
+                const auto leaf = leaves.find(node.first[i]);
+                INFO("leaves of " << leaf_size << ": a wide leaf at object " << node.first[i] << " of " << node.count[i]);
+                REQUIRE(leaf != leaves.end());
+                CHECK(leaf->second.first == node.count[i]);
+                CHECK(same_box(leaf->second.second, box));
+                ++seen[node.first[i]];
+            }
+        INFO("leaves of " << leaf_size << ": " << leaves.size() << " binary leaves, " << seen.size() << " found in "
+             << w.nodes.size() << " wide nodes (" << empty_slots << " empty slots)");
+        CHECK(seen.size() == leaves.size());
+        for (const auto& [first, times] : seen)
+            CHECK(times == 1);
+        CHECK(referenced[0] == 0);  // the root
+        for (std::size_t k = 1; k < referenced.size(); ++k)
+            CHECK(referenced[k] == 1);
+        // A binary tree of n leaves has n - 1 inner nodes; each wide node takes the place of one to
+        // three of them: a collapse that opened none would make n - 1.
+        CHECK(w.nodes.size() <= leaves.size() - 1);
+        CHECK(w.nodes.size() < leaves.size() / 2);
+    }
+}
+
+TEST_CASE("a 4-wide BVH of one leaf or of nothing answers as brute force does", "[structures]")
+{
+    LitScene one;
+    one.add_material({});
+    one.add_sphere({point3(0, 0, -3), 1.0f}, 0);
+    const Objects objects = objects_of(one, lit_tests);
+    const WideBvhAccel tree(objects);
+    REQUIRE(tree.tree().nodes.size() == 1);
+    ObjectHit hit;
+    CHECK(tree.closest({{0, 0, 0}, {0, 0, -1}}, {0.0f, infinity}, objects, hit));
+    CHECK(hit.object == 0);
+    CHECK(std::abs(hit.t - 2.0f) < 1e-6f);
+    CHECK(!tree.closest({{0, 0, 0}, {0, 0, 1}}, {0.0f, infinity}, objects, hit));
+    CHECK(!tree.any({{0, std::nanf(""), 0}, {0, 0, -1}}, {0.0f, infinity}, objects));
+
+    const LitScene nothing;
+    const Objects none = objects_of(nothing, lit_tests);
+    const WideBvhAccel empty(none);
+    CHECK(empty.tree().nodes.empty());
+    CHECK(!empty.closest({{0, 0, 0}, {0, 0, -1}}, {0.0f, infinity}, none, hit));
+    CHECK(!empty.any({{0, 0, 0}, {0, 0, -1}}, {0.0f, infinity}, none));
+}
+
+TEST_CASE("watertight through the 4-wide BVH: 10^5 rays from inside a closed sphere of triangles far from the origin all hit it", "[structures]")
+{
+    const Escapes e = escapes_from_closed_sphere<WideBvhAccel>(100000, 4321);
+    INFO("10^5 rays from within 200 of the centre of " << e.scene << ", " << lanes << ": " << e.escaped
+         << " escaped; the first: " << e.first);
+    CHECK(e.escaped == 0);
+}
