@@ -224,6 +224,12 @@ private:
                 count(Counter::nodes_visited);
                 float t0[4];
                 const unsigned entered = enter_boxes(node, slabs, reach, t0);
+                if (entered != 0 && (entered & (entered - 1)) == 0) {
+                    // One child entered (the commonest case): straight into it, nothing pushed.
+                    const int i = entered == 1u ? 0 : entered == 2u ? 1 : entered == 4u ? 2 : 3;
+                    e = {node.first[i], node.count[i], t0[i]};
+                    continue;
+                }
                 if (entered != 0) {
                     // The children entered, pushed far to near; the nearest is taken at once.
                     const int base = top;

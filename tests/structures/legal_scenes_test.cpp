@@ -34,7 +34,7 @@ std::vector<Structure> structures()
         {"hierarchy of grids", ch07::default_lambda,
          [](const Objects& o, float l) { return std::make_unique<HGridAccel>(o, HGridSettings{l}); }},
         {"BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<BvhAccel>(o, BvhSettings{}); }},
-        {"4-wide BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<WideBvhAccel>(o, BvhSettings{}); }},
+        {"4-wide BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<WideBvhAccel>(o); }},
     };
 }
 
