@@ -334,11 +334,18 @@ rt_expect_exit(09_hashed_voxels.too_fine 09_hashed_voxels 2
   "a hashed grid of 4096 x 634 x 4096 cells passes the limit of 2\\^31 cell addresses: choose a smaller lambda"
   --lambda 900000 --width 8 --height 8)
 
-# Chapter 10: the BVH renders brute force's picture and rays, SAH and median, at 1 and 2 threads.
+# Chapter 10: the BVH and its 4-wide form render brute force's picture and rays, SAH and median, at 1
+# and 2 threads.
 foreach(scene IN LISTS kit_scenes)
   rt_same_render(10_hierarchies.bvh_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute SECOND --accel bvh
     ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
 endforeach()
+foreach(scene IN LISTS kit_scenes)
+  rt_same_render(10_hierarchies.bvh4_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute SECOND --accel bvh4
+    ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
+endforeach()
+rt_same_render(10_hierarchies.bvh4_as_bvh_stadium 10_hierarchies FIRST --accel bvh SECOND --accel bvh4
+  ARGS --width 96 --height 54)
 foreach(scene IN LISTS kit_scenes)
   rt_same_render(10_hierarchies.hgrid_as_brute_classic_${scene} 10_hierarchies FIRST --accel brute
     SECOND --accel hgrid --leaf-size 2 --max-depth 3
@@ -357,12 +364,15 @@ rt_same_render(10_hierarchies.bvh_threads_tree 10_hierarchies FIRST --threads 1 
 rt_expect_exit(10_hierarchies.figure_stats 10_hierarchies 0
   "rays_primary=600\n.*accel=bvh\nobjects=21250\nnodes_visited=[1-9][0-9]*\n.*bvh_nodes=[1-9][0-9]*\n.*bvh_depth=[1-9][0-9]*\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_stats.png")
-rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, hgrid, hashed, grid or brute, got 'kd'" --accel kd)
+rt_expect_exit(10_hierarchies.bvh4_stats 10_hierarchies 0
+  "accel=bvh4\nobjects=21250\nnodes_visited=[1-9][0-9]*\n.*wide_nodes=[1-9][0-9]*\n"
+  --accel bvh4 --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_bvh4_stats.png")
+rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got 'kd'" --accel kd)
 rt_expect_exit(10_hierarchies.unknown_split 10_hierarchies 2 "--split takes sah or median, got 'random'" --split random)
 rt_expect_exit(10_hierarchies.leaf_size_with_grid 10_hierarchies 2
-  "--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to --accel bvh or hgrid only"
+  "--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to --accel bvh, bvh4 or hgrid only"
   --accel grid --leaf-size 8)
-rt_expect_exit(10_hierarchies.split_with_hgrid 10_hierarchies 2 "--split shapes the BVH; it applies to --accel bvh only"
+rt_expect_exit(10_hierarchies.split_with_hgrid 10_hierarchies 2 "--split shapes the BVH; it applies to --accel bvh or bvh4 only"
   --accel hgrid --split median)
 rt_expect_exit(10_hierarchies.hgrid_too_deep 10_hierarchies 2
   "--max-depth for the hierarchy of grids must be between 0 and 8, got 9" --accel hgrid --max-depth 9)

@@ -6,6 +6,7 @@
 #include "09_hashed_voxels/figure.hpp"
 #include "10_hierarchies/bvh.hpp"
 #include "10_hierarchies/hgrid.hpp"
+#include "10_hierarchies/wide_bvh.hpp"
 
 #include <memory>
 #include <string>
@@ -21,6 +22,8 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
 {
     if (name == "bvh")
         return std::make_unique<BvhAccel>(objects, bvh);
+    if (name == "bvh4")
+        return std::make_unique<WideBvhAccel>(objects, bvh);
     if (name == "hgrid") {
         hgrid.lambda = lambda;
         return std::make_unique<HGridAccel>(objects, hgrid);
@@ -29,7 +32,7 @@ inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, co
         return ch09::make_accelerator(name, objects, lambda, 0);
     if (name == "grid" || name == "brute")
         return ch07::make_accelerator(name, objects, lambda);
-    throw InputError("--accel takes bvh, hgrid, hashed, grid or brute, got '" + name + "'");
+    throw InputError("--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got '" + name + "'");
 }
 
 // The figure's scene through the BVH; with `cost`, what each pixel cost.

@@ -232,32 +232,34 @@ int main(int argc, char** argv)
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
         cli.option("--accel", o.accel,
-                   "what answers the queries: bvh, hgrid (the hierarchy of grids), hashed (chapter 09), grid (07) or brute");
+                   "what answers the queries: bvh, bvh4 (the same tree, four children to a node), hgrid (the hierarchy of "
+                   "grids), hashed (chapter 09), grid (07) or brute");
         cli.option("--lambda", o.lambda, "with grid, hgrid or hashed: cells per object", 0.0f, 1e6f);
         cli.option("--leaf-size", o.leaf_size,
-                   "with bvh: a node of at most this many objects is a leaf (default 4; a larger one is too at the "
-                   "depth limit or when no split pays); with hgrid: the most a cell lists before it "
+                   "with bvh or bvh4: a node of at most this many objects is a leaf (default 4; a larger one is too "
+                   "at the depth limit or when no split pays); with hgrid: the most a cell lists before it "
                    "gets a grid of its own (default 8)",
                    1, 65535);
         cli.option("--max-depth", o.max_depth,
-                   "with bvh: the deepest a leaf may lie (default 48); with hgrid: the deepest a grid may lie (default "
+                   "with bvh or bvh4: the deepest a leaf may lie (default 48); with hgrid: the deepest a grid may lie (default "
                    "2); the root is 0",
                    0, bvh_stack_size - 2);
-        cli.option("--split", o.split, "with bvh: sah (the surface area heuristic) or median");
+        cli.option("--split", o.split, "with bvh or bvh4: sah (the surface area heuristic) or median");
         add_sweep_options(cli, o.sweep, "measure leaf size, depth and split, and every structure side by side");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        if (o.accel != "bvh" && o.accel != "hgrid" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes bvh, hgrid, hashed, grid or brute, got '" + o.accel + "'");
+        const bool tree = o.accel == "bvh" || o.accel == "bvh4";
+        if (!tree && o.accel != "hgrid" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
+            throw InputError("--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got '" + o.accel + "'");
         if (o.split != "sah" && o.split != "median")
             throw InputError("--split takes sah or median, got '" + o.split + "'");
         o.bvh.split = o.split == "sah" ? BvhSplit::sah : BvhSplit::median;
-        if (o.accel != "bvh" && cli.given("--split"))
-            throw InputError("--split shapes the BVH; it applies to --accel bvh only");
-        if (o.accel != "bvh" && o.accel != "hgrid" && (cli.given("--leaf-size") || cli.given("--max-depth")))
+        if (!tree && cli.given("--split"))
+            throw InputError("--split shapes the BVH; it applies to --accel bvh or bvh4 only");
+        if (!tree && o.accel != "hgrid" && (cli.given("--leaf-size") || cli.given("--max-depth")))
             throw InputError("--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to "
-                             "--accel bvh or hgrid only");
-        if ((o.accel == "bvh" || o.accel == "brute") && cli.given("--lambda"))
+                             "--accel bvh, bvh4 or hgrid only");
+        if ((tree || o.accel == "brute") && cli.given("--lambda"))
             throw InputError("--lambda sets a grid's density; it applies to --accel grid, hgrid or hashed only");
         if (o.accel == "hgrid" && o.max_depth > HGridAccel::max_hgrid_depth)
             throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
