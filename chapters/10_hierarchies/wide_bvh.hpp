@@ -65,8 +65,8 @@ inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interva
     __m128 t0 = _mm_set1_ps(reach.min), t1 = _mm_set1_ps(reach.max);
     const __m128 widening = _mm_set1_ps(slab_far_widening);
     for (int a = 0; a < 3; ++a) {
-        const __m128 near_plane = _mm_load_ps(slabs.down[a] ? node.max[a] : node.min[a]);
-        const __m128 far_plane = _mm_load_ps(slabs.down[a] ? node.min[a] : node.max[a]);
+        const __m128 near_plane = _mm_loadu_ps(slabs.down[a] ? node.max[a] : node.min[a]);
+        const __m128 far_plane = _mm_loadu_ps(slabs.down[a] ? node.min[a] : node.max[a]);
         const __m128 o = _mm_set1_ps(slabs.origin[a]), inv = _mm_set1_ps(slabs.inv_dir[a]);
         const __m128 t_near = _mm_mul_ps(_mm_sub_ps(near_plane, o), inv);
         const __m128 t_far = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, o), inv), widening);
