@@ -7,14 +7,16 @@
 // Tracing", 2014; Dammertz et al., "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing
 // of Incoherent Rays", 2008) make the tree four or eight wide: a node's children's boxes lie in
 // arrays of four, one per plane (all four min x, then all four min y, ...), so one pass of the
-// slab test runs the same instructions on four boxes, and the compiler makes each of them one
-// 4-wide vector instruction (SSE on x86, NEON on ARM). A query makes about half the steps.
+// slab test runs the same instructions on four boxes, each of them one SSE instruction on x86. A
+// query takes about a quarter of the binary tree's steps, each testing four boxes.
 //
 // The tree is your BVH (10.1-10.3), collapsed: each wide node takes a binary node's two children,
 // and opens the largest of them that is not a leaf (by surface area, the child a ray is likeliest
-// to enter) until it has four. The leaves are the binary tree's, so every box a ray enters here is
-// a box the binary traversal would test, with the same robust slab test (common/bounds.hpp): the
-// answers are brute force's, bit for bit, as 10.4's are.
+// to enter) until it has four. It tests boxes the binary traversal would not (the children of a
+// box the ray misses, when that box was opened), and that costs nothing in exactness: the answers
+// are brute force's, bit for bit, as 10.4's are, because every box is tested with the robust slab
+// test (common/bounds.hpp) against the range that could still beat the best hit, so the boxes
+// around the nearest object are always entered, and every object is asked with closer_than.
 #pragma once
 
 #include "10_hierarchies/bvh.hpp"
@@ -23,8 +25,9 @@
 #include <vector>
 
 // SSE on every x86-64 compiler (GCC, Clang, MSVC); elsewhere (ARM: Apple silicon) the same test
-// lane by lane in plain C++. RT_WIDE_SCALAR forces the plain one, so a test can check both agree.
-#if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64))
+// lane by lane in plain C++, not measured here. RT_WIDE_SCALAR forces the plain one, so a test can
+// check that both agree.
+#if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64)) && !defined(_M_ARM64EC)
 #define RT_WIDE_SSE 1
 #include <xmmintrin.h>
 #else
@@ -35,13 +38,17 @@ namespace rt {
 
 // A node of four children, 128 bytes (two cache lines): each child's box, plane by plane, four to
 // an array; and what the child is: a leaf (count > 0: object_index[first .. first + count) of the
-// binary tree), another wide node (count == 0: nodes[first]), or nothing (an empty box, which no
-// ray enters: its min is +infinity and its max -infinity, so t_near is +infinity on every axis).
+// binary tree), another wide node (count == 0: nodes[first]), or nothing (its bit clear in
+// `occupied`, its box empty: min +infinity, max -infinity). The mask, not the empty box, keeps a
+// ray out of an empty slot: where a program flushes tiny floats to 0 (-ffast-math), a direction
+// of huge components has 1 / d = 0, every slab NaN, and every box entered.
 struct alignas(64) WideNode {
     float min[3][4];
     float max[3][4];
     std::uint32_t first[4];
-    std::uint32_t count[4];
+    std::uint16_t count[4];  // as BvhNode::count: at most 65535 objects a leaf
+    std::uint32_t occupied;  // bit i: child i exists
+    std::uint32_t unused;
 };
 static_assert(sizeof(WideNode) == 128, "a wide node is two cache lines");
 
@@ -50,15 +57,16 @@ struct WideBvh {
     std::vector<std::uint32_t> object_index;
 };
 
-// A wide node has up to four children on the stack, each pushed once per level: a path of at most
-// bvh_stack_size binary levels pushes fewer than 3 entries a level, plus the root.
+// Why 3 a level: a visit pops one entry and pushes at most four, and a wide level spans at least
+// one binary level, of which a path has fewer than bvh_stack_size (bvh.hpp's depth limit).
 constexpr int wide_stack_size = 3 * bvh_stack_size + 1;
 
 // The slab test of common/bounds.hpp on the node's four boxes at once: the same formula, the
 // same order of operations, so each box is entered exactly when slab_interval would enter it.
-// Returns a bit a box entered (bit i: child i), with where the ray enters it in t0_out[i]. SSE's max and min return their second
-// operand when either is NaN, as the scalar test's `t_near > t0 ? t_near : t0` keeps t0: a NaN
-// slab (an origin on a face, d_i = 0) leaves the interval alone.
+// Returns the mask of the boxes entered (bit i: child i), with each one's entry t in t0_out[i].
+// SSE's max and min return their second operand when either is NaN, as the scalar test's
+// `t_near > t0 ? t_near : t0` keeps t0: a NaN slab (an origin on a face, d_i = 0) leaves the
+// interval alone.
 inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interval reach, float t0_out[4])
 {
 #if RT_WIDE_SSE
@@ -74,7 +82,8 @@ inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interva
         t1 = _mm_min_ps(t_far, t1);
     }
     _mm_storeu_ps(t0_out, t0);
-    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, t1)));
+    // Entered unless t0 > t1, as slab_interval says it.
+    return ~static_cast<unsigned>(_mm_movemask_ps(_mm_cmpgt_ps(t0, t1))) & 0xfu;
 #else
     float t0[4], t1[4];
     for (int i = 0; i < 4; ++i) {
@@ -138,7 +147,7 @@ public:
     const WideBvh& tree() const { return tree_; }
 
 private:
-    static void set_child(WideNode& w, int i, const Bounds& box, std::uint32_t first, std::uint32_t count)
+    static void set_child(WideNode& w, int i, const Bounds& box, std::uint32_t first, std::uint16_t count)
     {
         for (int a = 0; a < 3; ++a) {
             w.min[a][i] = box.min[a];
@@ -146,6 +155,7 @@ private:
         }
         w.first[i] = first;
         w.count[i] = count;
+        w.occupied |= 1u << i;
     }
 
     static WideNode empty_node()
@@ -153,6 +163,7 @@ private:
         WideNode w{};
         for (int i = 0; i < 4; ++i)
             set_child(w, i, Bounds{}, 0, 0);
+        w.occupied = 0;
         return w;
     }
 
@@ -203,7 +214,7 @@ private:
         };
         Entry stack[wide_stack_size];
         int top = 0;
-        Entry e{0, 0, range.min};
+        Entry e{0, 0, range.min};  // the root: a wide node (count 0), number 0
         for (;;) {
             if (e.count > 0) {
                 for (std::uint32_t j = 0; j < e.count; ++j) {
@@ -223,7 +234,7 @@ private:
                 const WideNode& node = tree_.nodes[e.first];
                 count(Counter::nodes_visited);
                 float t0[4];
-                const unsigned entered = enter_boxes(node, slabs, reach, t0);
+                const unsigned entered = enter_boxes(node, slabs, reach, t0) & node.occupied;
                 if (entered != 0 && (entered & (entered - 1)) == 0) {
                     // One child entered (the commonest case): straight into it, nothing pushed.
                     const int i = entered == 1u ? 0 : entered == 2u ? 1 : entered == 4u ? 2 : 3;
