@@ -60,5 +60,16 @@ else()
   set(RT_NO_UNUSED_PARAMETER_WARNING -Wno-unused-parameter)
 endif()
 
+# Float formulas mean what they say: no multiply and add fused into one rounding where the compiler
+# may choose to (GCC fuses across statements by default and clang within one, wherever the processor
+# has FMA: ARM, Apple silicon, x86-64 built for a recent -march). The kit's exact answers rest on
+# each product being rounded: chapter 10's four lanes answer as 02.5 does one triangle at a time,
+# bit for bit, only if neither is fused differently from the other. (MSVC fuses only when asked.)
+if(MSVC)
+  set(RT_FLOAT_FLAGS /fp:precise)
+else()
+  set(RT_FLOAT_FLAGS -ffp-contract=off)
+endif()
+
 # Threads: the kit's parallel loop is std::thread (common/parallel.hpp), OpenMP or not.
 find_package(Threads REQUIRED)
