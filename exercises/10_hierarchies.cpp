@@ -77,4 +77,15 @@ bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interva
     return stub("10.5", false);
 }
 
+FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval range)
+{
+    // EXERCISE 10.6 (advanced): four triangles at once
+    // Return the lanes of block g that the ray of frame f hits with t strictly inside range, each with
+    // its t, V, W and det exactly as the watertight test (02.5) computes them for that lane's
+    // triangle: 02.5's formulas with Float4 in place of float, in the same order; triangles without
+    // area and empty lanes never hit. Lesson: "Four triangles at once (EXERCISE 10.6, advanced)".
+    // Stuck? hint 10.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
+    return stub("10.6", FourHits{});
+}
+
 }  // namespace rt

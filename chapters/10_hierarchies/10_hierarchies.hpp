@@ -10,11 +10,14 @@
 // limit. Two kinds: bounding volumes on hierarchical groups of objects, here a bounding volume
 // hierarchy (BVH) built by the surface area heuristic (bvh.hpp builds it with your 10.1-10.3 and
 // queries it with your 10.4); and space subdivision, here the slides' hierarchy of grids (hgrid.hpp
-// builds it; your 10.5 walks it).
+// builds it; your 10.5 walks it). Then the speed the lesson measures: the tree four children to a
+// node (wide_bvh.hpp, given), whose leaves' triangles your 10.6 tests four at once.
 #pragma once
 
 #include "02_spheres_triangles/scene_query.hpp"
 #include "07_uniform_grid/07_uniform_grid.hpp"
+#include "10_hierarchies/four_triangles.hpp"
+#include "10_hierarchies/lanes.hpp"
 #include "common/bounds.hpp"
 
 #include <cstdint>
@@ -131,5 +134,16 @@ struct HGrid {
 // root's walk is hgrid_closest(h, 0, ray, range, range, objects, best).
 bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interval range, const Objects& objects,
                    ObjectHit& best);
+
+// EXERCISE 10.6 (advanced): the watertight test (02.5) on the four triangles of block `g` at once,
+// for the ray whose frame is `f` (ray_frame: 02.5's kx, ky, kz, Sx, Sy, Sz, worked out once per ray),
+// with Float4 (lanes.hpp) in place of float: each lane must give exactly what 02.5's reference gives
+// for its triangle, hit or miss, and t, V, W and det to the bit, so the wide tree keeps brute
+// force's answers. A lane hits when its triangle has area (bit i of g.with_area), its edge functions
+// U, V, W (recomputed in double where one of them is 0 in float, as 02.5 does) do not differ in
+// sign, det = U + V + W is not 0, and t lies strictly inside `range`. Lanes without a triangle (not
+// in g.lanes) are never hit. Returns the lanes hit (bit i: lane i) with their t, V, W and det; no
+// branch per lane but for the rare fallback to double. Uncounted: the caller counts the tests.
+FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval range);
 
 }  // namespace rt

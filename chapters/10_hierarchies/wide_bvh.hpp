@@ -17,22 +17,20 @@
 // are brute force's, bit for bit, as 10.4's are, because every box is tested with the robust slab
 // test (common/bounds.hpp) against the range that could still beat the best hit, so the boxes
 // around the nearest object are always entered, and every object is asked with closer_than.
+//
+// Its leaves are the binary tree's; a leaf of triangles only is also copied into blocks of four
+// (four_triangles.hpp) at the build, and a query that asks for the watertight test (chapter 04 on)
+// tests each block with your 10.6, four triangles in one pass, then asks each lane hit, in the
+// leaf's order, what the one-by-one loop asks an object ("Four triangles at once" in the lesson).
 #pragma once
 
 #include "10_hierarchies/bvh.hpp"
+#include "10_hierarchies/four_triangles.hpp"
+#include "10_hierarchies/lanes.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
-
-// SSE on every x86-64 compiler (GCC, Clang, MSVC); elsewhere (ARM: Apple silicon) the same test
-// lane by lane in plain C++, not measured here. RT_WIDE_SCALAR forces the plain one, so a test can
-// check that both agree.
-#if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64)) && !defined(_M_ARM64EC)
-#define RT_WIDE_SSE 1
-#include <xmmintrin.h>
-#else
-#define RT_WIDE_SSE 0
-#endif
 
 namespace rt {
 
@@ -52,9 +50,15 @@ struct alignas(64) WideNode {
 };
 static_assert(sizeof(WideNode) == 128, "a wide node is two cache lines");
 
+constexpr std::uint32_t no_block = 0xffffffffu;
+
 struct WideBvh {
     std::vector<WideNode> nodes;  // nodes[0] is the root
     std::vector<std::uint32_t> object_index;
+    // The triangles of each leaf of triangles only, four to a block: block_of[first] is the first
+    // block of the leaf at object_index[first], or no_block (a leaf holding a sphere or a cone).
+    std::vector<FourTriangles> blocks;
+    std::vector<std::uint32_t> block_of;
 };
 
 // Why 3 a level: a visit pops one entry and pushes at most four, and a wide level spans at least
@@ -124,7 +128,9 @@ public:
             else
                 collapse(b, 0);
         }
-        bytes_ = tree_.nodes.size() * sizeof(WideNode) + tree_.object_index.size() * sizeof(std::uint32_t);
+        build_triangle_blocks(objects);
+        bytes_ = tree_.nodes.size() * sizeof(WideNode) + tree_.blocks.size() * sizeof(FourTriangles) +
+                 tree_.block_of.size() * sizeof(std::uint32_t) + tree_.object_index.size() * sizeof(std::uint32_t);
         build_seconds_ = timer.seconds();
     }
 
@@ -147,6 +153,37 @@ public:
     const WideBvh& tree() const { return tree_; }
 
 private:
+    // Each leaf of triangles only, its triangles copied four to a block (four_triangles.hpp), the
+    // blocks of a leaf one after another; leaves holding another kind keep the one-by-one loop.
+    void build_triangle_blocks(const Objects& objects)
+    {
+        tree_.block_of.assign(tree_.object_index.size(), no_block);
+        const auto triangles_only = [&](const WideNode& w, int i) {
+            if (!(w.occupied >> i & 1u) || w.count[i] == 0)
+                return false;
+            for (std::uint32_t j = 0; j < w.count[i]; ++j)
+                if (objects.ref(static_cast<int>(tree_.object_index[w.first[i] + j])).kind != ObjectKind::triangle)
+                    return false;
+            return true;
+        };
+        // Counted first, so the blocks take one allocation, not a vector's growing copies.
+        std::size_t blocks = 0;
+        for (const WideNode& w : tree_.nodes)
+            for (int i = 0; i < 4; ++i)
+                if (triangles_only(w, i))
+                    blocks += (w.count[i] + 3u) / 4u;
+        tree_.blocks.reserve(blocks);
+        for (const WideNode& w : tree_.nodes)
+            for (int i = 0; i < 4; ++i) {
+                if (!triangles_only(w, i))
+                    continue;
+                const std::uint32_t* object = &tree_.object_index[w.first[i]];
+                tree_.block_of[w.first[i]] = static_cast<std::uint32_t>(tree_.blocks.size());
+                for (std::uint32_t j = 0; j < w.count[i]; j += 4)
+                    tree_.blocks.push_back(four_triangles(objects, object + j, std::min<std::uint32_t>(4, w.count[i] - j)));
+            }
+    }
+
     static void set_child(WideNode& w, int i, const Bounds& box, std::uint32_t first, std::uint16_t count)
     {
         for (int a = 0; a < 3; ++a) {
@@ -205,6 +242,11 @@ private:
         if (tree_.nodes.empty() || !valid_ray(ray))
             return false;
         const RaySlabs slabs(ray);
+        // Four triangles at once where the query asks for the watertight test (chapter 04 on);
+        // the other tests go one by one through the object list.
+        const bool bounded = objects.tests.triangle == TriangleTest::watertight_bounded;
+        const bool four_wide = bounded || objects.tests.triangle == TriangleTest::watertight;
+        const RayFrame frame = ray_frame(ray);
         Interval reach = range;
         ObjectHit best;
         bool found = false;
@@ -216,7 +258,35 @@ private:
         int top = 0;
         Entry e{0, 0, range.min};  // the root: a wide node (count 0), number 0
         for (;;) {
-            if (e.count > 0) {
+            if (e.count > 0 && four_wide && tree_.block_of[e.first] != no_block) {
+                // A leaf of triangles: four at a time, then each lane hit asked in the leaf's order
+                // what the one-by-one loop asks it (the tie rule, the bound on t, its front).
+                const FourTriangles* g = &tree_.blocks[tree_.block_of[e.first]];
+                for (std::uint32_t j = 0; j < e.count; j += 4, ++g) {
+                    count(Counter::intersection_tests, std::min<std::uint32_t>(4, e.count - j));
+                    const FourHits h = hit_four_triangles(*g, frame, Interval{range.min, reach.max});
+                    for (int i = 0; i < 4; ++i) {
+                        if (!(h.hit >> i & 1u))
+                            continue;
+                        const int k = g->object[i];
+                        if (!closer_than(range, best, k).surrounds(h.t[i]))
+                            continue;
+                        const int tri = objects.ref(k).index;
+                        if (bounded && !(h.t[i] > watertight_t_error(ray, objects.triangles[tri])))
+                            continue;
+                        if (objects.one_sided && (*objects.one_sided)[tri] &&
+                            glm::dot(face_normal(objects.triangles[tri]), ray.dir) > 0.0f)
+                            continue;  // its back
+                        best = {h.t[i], k, h.V[i] / h.det[i], h.W[i] / h.det[i]};
+                        found = true;
+                        if (any_hit) {
+                            hit = best;
+                            return true;
+                        }
+                        reach.max = std::nextafter(best.t, infinity);
+                    }
+                }
+            } else if (e.count > 0) {
                 for (std::uint32_t j = 0; j < e.count; ++j) {
                     const int k = static_cast<int>(tree_.object_index[e.first + j]);
                     ObjectHit h;

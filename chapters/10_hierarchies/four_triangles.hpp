@@ -1,0 +1,81 @@
+// A leaf's triangles four to a block (given), for the four-triangle test of EXERCISE 10.6.
+//
+// With four boxes tested for the price of one (wide_bvh.hpp), the triangle test is over half of a
+// query through the wide tree: about 270 instructions a test, one triangle at a time, each asked
+// through the object list (its kind, its corners gathered from the scene's arrays, 02.5's frame
+// worked out again). Embree stores a leaf's triangles four to a block, corner by corner and axis by
+// axis, and tests the four with one pass of SIMD instructions (Wald et al., "Embree: A Kernel
+// Framework for Efficient CPU Ray Tracing", 2014). This file is the kit's block, and the ray's frame
+// worked out once per query; the test of a block is yours (10.6).
+#pragma once
+
+#include "02_spheres_triangles/objects.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cstdint>
+#include <utility>
+
+namespace rt {
+
+// The watertight test's frame for one ray (02.5's first steps), worked out once per query instead of
+// once per triangle: kz the axis the ray runs along most, kx and ky the other two (swapped when the
+// ray runs down kz, so the triangle keeps its winding), the shear, and the origin in that order.
+struct RayFrame {
+    int kx, ky, kz;
+    float Sx, Sy, Sz;
+    float o[3];
+};
+
+inline RayFrame ray_frame(const Ray& ray)
+{
+    const vec3 ad = glm::abs(ray.dir);
+    const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (ray.dir[kz] < 0)
+        std::swap(kx, ky);
+    const float* d = glm::value_ptr(ray.dir);
+    const float* o = glm::value_ptr(ray.origin);
+    return {kx, ky, kz, d[kx] / d[kz], d[ky] / d[kz], 1.0f / d[kz], {o[kx], o[ky], o[kz]}};
+}
+
+// Four triangles of a leaf, corner by corner and axis by axis: p[c][a][i] is coordinate a of corner c
+// (a, b, c) of the triangle in lane i. 160 bytes for four, copied from the scene at the build.
+struct alignas(16) FourTriangles {
+    float p[3][3][4];
+    std::int32_t object[4];   // each lane's object number
+    std::uint32_t lanes;      // bit i: lane i holds a triangle
+    std::uint32_t with_area;  // bit i: and it has area (02.5 never hits one without: its normal is 0)
+};
+
+// What the test of a block finds (10.6): the lanes hit, and for each lane hit its t, and the edge
+// functions V and W and det = U + V + W, of which 02.5's beta = V / det and gamma = W / det (worked
+// out by the caller for the one hit it keeps).
+struct FourHits {
+    unsigned hit = 0;  // bit i: lane i hit
+    float t[4], V[4], W[4], det[4];
+};
+
+// The four triangles of the leaf objects `object[0 .. n)` (n <= 4; all triangles), copied from the
+// scene: what the wide tree stores for each leaf of triangles.
+inline FourTriangles four_triangles(const Objects& objects, const std::uint32_t* object, std::uint32_t n)
+{
+    FourTriangles g{};
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const int k = static_cast<int>(object[i]);
+        const Triangle& tri = objects.triangles[objects.ref(k).index];
+        const vec3 corner[3] = {tri.a, tri.b, tri.c};
+        for (int c = 0; c < 3; ++c)
+            for (int a = 0; a < 3; ++a)
+                g.p[c][a][i] = corner[c][a];
+        g.object[i] = k;
+        g.lanes |= 1u << i;
+        // 02.5's own first check, on the same floats: a triangle whose normal is 0 is never hit.
+        const vec3 normal = glm::cross(tri.b - tri.a, tri.c - tri.a);
+        if (!(normal.x == 0 && normal.y == 0 && normal.z == 0))
+            g.with_area |= 1u << i;
+    }
+    return g;
+}
+
+}  // namespace rt

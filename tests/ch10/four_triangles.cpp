@@ -1,0 +1,151 @@
+// EXERCISE 10.6: four triangles at once, each lane against the watertight test (02.5) on its own
+// triangle: hit or miss, t, beta and gamma to the bit.
+#include "10_hierarchies/10_hierarchies.hpp"
+#include "common/random.hpp"
+#include "tests/grader/graded.hpp"
+
+#include <string>
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+const char* const lanes = lanes_kind;
+
+struct Tally {
+    int lanes_checked = 0, hits = 0, on_edges = 0, without_area = 0;
+};
+
+// Blocks of 1-4 triangles of corners from `point`, one in ten without area (a repeated corner, or
+// three in a line), each ray from `point` along `direction` (or, with `at_edges`, half the rays at
+// the middle of an edge of one of the block's triangles), in the range (0 or 0.5, infinity or 2).
+// Every lane must say what hit_triangle_watertight says of its triangle; an empty lane is never hit.
+template <class Point, class Direction>
+Tally check_blocks(Rng& rng, int blocks, Point point, Direction direction, bool at_edges)
+{
+    Tally tally;
+    for (int k = 0; k < blocks; ++k) {
+        Triangle tris[4];
+        const std::uint32_t n = 1 + static_cast<std::uint32_t>(rng.next_float() * 4.0f) % 4;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            tris[i] = {point(), point(), point()};
+            const float r = rng.next_float();
+            if (r < 0.05f)
+                tris[i].c = tris[i].a;  // a repeated corner
+            else if (r < 0.1f)
+                tris[i].c = tris[i].a + 2.0f * (tris[i].b - tris[i].a);  // three in a line
+        }
+        Objects objects;
+        objects.triangles = tris;
+        objects.triangle_count = static_cast<int>(n);
+        const std::uint32_t index[4] = {0, 1, 2, 3};
+        const FourTriangles g = four_triangles(objects, index, n);
+        Ray ray{point(), direction()};
+        if (at_edges && rng.next_float() < 0.5f) {
+            // At the middle of an edge: its edge function is a difference of two nearly equal
+            // products, which float often rounds to exactly 0 where double does not.
+            const Triangle& t = tris[static_cast<std::uint32_t>(rng.next_float() * 4.0f) % n];
+            ray.dir = 0.5f * (t.a + t.b) - ray.origin;
+        }
+        if (ray.dir == vec3(0.0f))
+            continue;
+        const Interval range{rng.next_float() < 0.7f ? 0.0f : 0.5f, rng.next_float() < 0.7f ? infinity : 2.0f};
+        const FourHits got = hit_four_triangles(g, ray_frame(ray), range);
+        for (std::uint32_t i = 0; i < 4; ++i) {
+            const bool hit = got.hit >> i & 1u;
+            if (i >= n) {
+                INFO("lane " << i << " of a block of " << n << " triangles (" << lanes << ") is empty, yet hit");
+                REQUIRE(!hit);
+                continue;
+            }
+            const std::optional<TriangleHit<float>> want = hit_triangle_watertight(ray, tris[i], range);
+            INFO(show(ray) << ", t in (" << range.min << ", " << range.max << "), triangle " << show(tris[i].a) << ", "
+                 << show(tris[i].b) << ", " << show(tris[i].c) << " in lane " << i << " of " << n << " (" << lanes
+                 << "): the watertight test says "
+                 << (want ? "t = " + std::to_string(want->t) + ", beta = " + std::to_string(want->beta) +
+                                ", gamma = " + std::to_string(want->gamma)
+                          : std::string("missed"))
+                 << "; hit_four_triangles "
+                 << (hit ? "t = " + std::to_string(got.t[i]) + ", beta = " + std::to_string(got.V[i] / got.det[i]) +
+                               ", gamma = " + std::to_string(got.W[i] / got.det[i])
+                         : std::string("missed")));
+            REQUIRE(hit == want.has_value());
+            ++tally.lanes_checked;
+            tally.without_area += !(g.with_area >> i & 1u);
+            if (!hit)
+                continue;
+            REQUIRE(got.t[i] == want->t);
+            REQUIRE(got.V[i] / got.det[i] == want->beta);
+            REQUIRE(got.W[i] / got.det[i] == want->gamma);
+            ++tally.hits;
+            tally.on_edges += want->beta == 0.0f || want->gamma == 0.0f || want->beta + want->gamma == 1.0f;
+        }
+    }
+    return tally;
+}
+
+}  // namespace
+
+GRADED_TEST("hit_four_triangles: each lane answers as the watertight test does, through edges, corners and triangles without area",
+            "10.6", 5)
+{
+    // Corners on a coarse lattice, rays from lattice points along lattice directions (some with a 0
+    // or -0 component): hits on edges and at corners, from either side, back faces included.
+    Rng rng(31, 7);
+    const auto lattice = [&] { return static_cast<float>(static_cast<int>(rng.next_float() * 5.0f) - 2); };
+    const auto point = [&] { return point3(lattice(), lattice(), lattice()); };
+    const auto direction = [&] {
+        vec3 d(lattice(), lattice(), lattice());
+        if (rng.next_float() < 0.2f)
+            d[static_cast<int>(rng.next_float() * 3.0f) % 3] = rng.next_float() < 0.5f ? 0.0f : -0.0f;
+        return d;
+    };
+    const Tally t = check_blocks(rng, 30000, point, direction, false);
+    INFO(t.lanes_checked << " lanes: " << t.hits << " hit, " << t.on_edges << " of them on an edge or corner; "
+                         << t.without_area << " triangles without area");
+    CHECK(t.hits > t.lanes_checked / 40);
+    CHECK(t.on_edges > 100);
+    CHECK(t.without_area > 1000);
+}
+
+STABILITY_TEST("hit_four_triangles: where float rounds an edge function to 0, the lane is decided in double, as 02.5 decides it",
+               "10.6", 3)
+{
+    // Corners anywhere in a cube of side 8, rays from anywhere, half of them at the middle of an
+    // edge: the lanes where one edge function is 0 in float, and 02.5 asks double.
+    Rng rng(32, 7);
+    const auto anywhere = [&] { return 8.0f * rng.next_float() - 4.0f; };
+    const auto point = [&] { return point3(anywhere(), anywhere(), anywhere()); };
+    const auto direction = [&] { return vec3(anywhere(), anywhere(), anywhere()); };
+    const Tally t = check_blocks(rng, 30000, point, direction, true);
+    INFO(t.lanes_checked << " lanes: " << t.hits << " hit, " << t.on_edges << " of them on an edge");
+    CHECK(t.hits > t.lanes_checked / 40);
+    CHECK(t.on_edges > 100);
+}
+
+GRADED_TEST("hit_four_triangles: a hit counts only with t strictly inside the range", "10.6", 2)
+{
+    // One triangle in the plane z = -2, the ray straight down -z from the origin: t = 2 exactly.
+    const Triangle tri{{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}};
+    Objects objects;
+    objects.triangles = &tri;
+    objects.triangle_count = 1;
+    const std::uint32_t index[1] = {0};
+    const FourTriangles g = four_triangles(objects, index, 1);
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    const struct {
+        Interval range;
+        bool hit;
+    } cases[] = {{{0.0f, infinity}, true}, {{0.0f, 2.0f}, false}, {{2.0f, infinity}, false},
+                 {{0.0f, std::nextafter(2.0f, infinity)}, true}, {{std::nextafter(2.0f, 0.0f), 3.0f}, true}};
+    for (const auto& c : cases) {
+        const FourHits got = hit_four_triangles(g, ray_frame(ray), c.range);
+        INFO(show(ray) << " at the triangle " << show(tri.a) << ", " << show(tri.b) << ", " << show(tri.c)
+                       << " (t = 2), range (" << c.range.min << ", " << c.range.max << "): lanes hit " << got.hit
+                       << ", lane 0's t " << (got.hit & 1u ? std::to_string(got.t[0]) : std::string("-")));
+        CHECK(got.hit == (c.hit ? 1u : 0u));
+        if (c.hit && (got.hit & 1u))
+            CHECK(got.t[0] == 2.0f);
+    }
+}
