@@ -64,8 +64,11 @@ endif()
 # may choose to (GCC fuses across statements by default and clang within one, wherever the processor
 # has FMA: ARM, Apple silicon, x86-64 built for a recent -march). The kit's exact answers rest on
 # each product being rounded: chapter 10's four lanes answer as 02.5 does one triangle at a time,
-# bit for bit, only if neither is fused differently from the other. (MSVC fuses only when asked.)
-if(MSVC)
+# bit for bit, only if neither is fused differently from the other. MSVC 2022 fuses only when asked
+# (/fp:contract); MSVC 2019 may under /arch:AVX2, which the kit never sets. clang-cl is clang.
+if(MSVC AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  set(RT_FLOAT_FLAGS /fp:precise /clang:-ffp-contract=off)
+elseif(MSVC)
   set(RT_FLOAT_FLAGS /fp:precise)
 else()
   set(RT_FLOAT_FLAGS -ffp-contract=off)

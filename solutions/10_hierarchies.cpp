@@ -190,8 +190,10 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
     // EXERCISE 10.6 (advanced): four triangles at once
     // Return the lanes of block g that the ray of frame f hits with t strictly inside range, each with
     // its t, V, W and det exactly as the watertight test (02.5) computes them for that lane's
-    // triangle: 02.5's formulas with Float4 in place of float, in the same order; triangles without
-    // area and empty lanes never hit. Lesson: "Four triangles at once (EXERCISE 10.6, advanced)".
+    // triangle: 02.5's formulas with Float4 in place of float, in the same order (the contract writes
+    // them out); triangles without area and empty lanes never hit. The stub's FourHits::not_tested()
+    // has the wide tree ask the block one triangle at a time. Lesson: "Four triangles at once
+    // (EXERCISE 10.6, advanced)".
     // Stuck? hint 10.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const Float4 Sx = f.Sx, Sy = f.Sy, Sz = f.Sz;
@@ -229,7 +231,7 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
     t.store(hits.t), V.store(hits.V), W.store(hits.W), det.store(hits.det);
     return hits;
     // SOLUTION END
-    // STUB return stub("10.6", FourHits{});
+    // STUB return stub("10.6", FourHits::not_tested());
 }
 
 }  // namespace rt

@@ -136,14 +136,20 @@ bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interva
                    ObjectHit& best);
 
 // EXERCISE 10.6 (advanced): the watertight test (02.5) on the four triangles of block `g` at once,
-// for the ray whose frame is `f` (ray_frame: 02.5's kx, ky, kz, Sx, Sy, Sz, worked out once per ray),
-// with Float4 (lanes.hpp) in place of float: each lane must give exactly what 02.5's reference gives
-// for its triangle, hit or miss, and t, V, W and det to the bit, so the wide tree keeps brute
-// force's answers. A lane hits when its triangle has area (bit i of g.with_area), its edge functions
-// U, V, W (recomputed in double where one of them is 0 in float, as 02.5 does) do not differ in
-// sign, det = U + V + W is not 0, and t lies strictly inside `range`. Lanes without a triangle (not
-// in g.lanes) are never hit. Returns the lanes hit (bit i: lane i) with their t, V, W and det; no
-// branch per lane but for the rare fallback to double. Uncounted: the caller counts the tests.
+// for the ray whose frame is `f` (ray_frame: 02.5's kx, ky, kz, Sx, Sy, Sz and the origin in that
+// order, worked out once per ray), with Float4 (lanes.hpp) in place of float. Each lane must give
+// exactly what 02.5 gives for its triangle (the 02.5 this program links: the reference while
+// solutions/ is present), hit or miss and t, V, W and det to the bit, so the wide tree keeps brute
+// force's answers; float rounds each operation, so that means 02.5's operations in 02.5's order.
+// The reference's, for the lane's corners a, b, c:
+//   az = a[kz] - o[kz], ax = (a[kx] - o[kx]) - Sx az, ay = (a[ky] - o[ky]) - Sy az (b and c alike);
+//   U = cx by - cy bx, V = ax cy - ay cx, W = bx ay - by ax (cross_2d: each product rounded, then
+//   the difference), all three again in double (cross_2d<double>) where one of them is 0 in float;
+//   det = (U + V) + W; t = ((U (Sz az) + V (Sz bz)) + W (Sz cz)) / det.
+// A lane hits when its triangle has area (bit i of g.with_area), U, V, W do not differ in sign (some
+// negative and some positive), det is not 0, and t lies strictly inside `range`. Returns the lanes
+// hit (bit i: lane i) with their t, V, W and det; no branch per lane but for the rare fallback to
+// double. Uncounted: the caller counts the tests.
 FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval range);
 
 }  // namespace rt

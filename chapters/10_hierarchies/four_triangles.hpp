@@ -40,20 +40,29 @@ inline RayFrame ray_frame(const Ray& ray)
 }
 
 // Four triangles of a leaf, corner by corner and axis by axis: p[c][a][i] is coordinate a of corner c
-// (a, b, c) of the triangle in lane i. 160 bytes for four, copied from the scene at the build.
-struct alignas(16) FourTriangles {
+// (a, b, c) of the triangle in lane i. 164 bytes for four, copied from the scene at the build; a
+// block of fewer than four leaves its other lanes at 0, out of with_area.
+struct FourTriangles {
     float p[3][3][4];
     std::int32_t object[4];   // each lane's object number
-    std::uint32_t lanes;      // bit i: lane i holds a triangle
-    std::uint32_t with_area;  // bit i: and it has area (02.5 never hits one without: its normal is 0)
+    std::uint32_t with_area;  // bit i: lane i holds a triangle with area (02.5 never hits one without)
 };
 
 // What the test of a block finds (10.6): the lanes hit, and for each lane hit its t, and the edge
 // functions V and W and det = U + V + W, of which 02.5's beta = V / det and gamma = W / det (worked
-// out by the caller for the one hit it keeps).
+// out by the caller for the one hit it keeps). `tested` is false only for 10.6's stub
+// (FourHits::not_tested()): the wide tree then asks the block's triangles one by one, as before
+// step 6, so a program runs and answers right, at step 5's speed, until 10.6 is written.
 struct FourHits {
     unsigned hit = 0;  // bit i: lane i hit
     float t[4], V[4], W[4], det[4];
+    bool tested = true;
+    static FourHits not_tested()
+    {
+        FourHits h;
+        h.tested = false;
+        return h;
+    }
 };
 
 // The four triangles of the leaf objects `object[0 .. n)` (n <= 4; all triangles), copied from the
@@ -69,7 +78,6 @@ inline FourTriangles four_triangles(const Objects& objects, const std::uint32_t*
             for (int a = 0; a < 3; ++a)
                 g.p[c][a][i] = corner[c][a];
         g.object[i] = k;
-        g.lanes |= 1u << i;
         // 02.5's own first check, on the same floats: a triangle whose normal is 0 is never hit.
         const vec3 normal = glm::cross(tri.b - tri.a, tri.c - tri.a);
         if (!(normal.x == 0 && normal.y == 0 && normal.z == 0))

@@ -7,7 +7,9 @@
 // IEEE single precision, lane by lane, rounded as the scalar operations are, and its compares are
 // the scalar compares (false for NaN; != true for it). So a formula written once with Float4 in
 // place of float gives in each lane what the scalar formula gives, as long as it keeps the scalar
-// formula's order of operations.
+// formula's order of operations and neither is fused into multiply-adds (the kit builds with
+// -ffp-contract=off). That holds wherever float arithmetic is single precision: every 64-bit
+// processor, not 32-bit x86's x87, which the kit does not support.
 #pragma once
 
 #if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64)) && !defined(_M_ARM64EC)
@@ -22,8 +24,9 @@ namespace rt {
 // Which of the two this program runs, for messages.
 constexpr const char* lanes_kind = RT_WIDE_SSE ? "SSE" : "plain C++";
 
-// The two kinds under two names, so a program that compiles both (the kit's tests do) never mixes
-// one's inline functions with the other's.
+// The two kinds under two names, so that Float4's and Mask4's own functions built one way are never
+// taken for the other's. The code written on them (the four-box test, the wide tree, 10.6) has one
+// name either way: a program builds it all one way, as the kit's tests build each variant.
 #if RT_WIDE_SSE
 inline namespace lanes_sse {
 #else

@@ -246,10 +246,27 @@ private:
         // the other tests go one by one through the object list.
         const bool bounded = objects.tests.triangle == TriangleTest::watertight_bounded;
         const bool four_wide = bounded || objects.tests.triangle == TriangleTest::watertight;
-        const RayFrame frame = ray_frame(ray);
+        const RayFrame frame = four_wide ? ray_frame(ray) : RayFrame{};
         Interval reach = range;
         ObjectHit best;
         bool found = false;
+        // A hit becomes the best so far; true when it answers an any-hit query.
+        const auto keep = [&](const ObjectHit& h) {
+            best = h;
+            found = true;
+            reach.max = std::nextafter(best.t, infinity);
+            return any_hit;
+        };
+        // Objects asked one by one, in order, through the object list, as 10.4's loop asks them.
+        const auto one_by_one = [&](const std::uint32_t* object, std::uint32_t n) {
+            for (std::uint32_t j = 0; j < n; ++j) {
+                const int k = static_cast<int>(object[j]);
+                ObjectHit h;
+                if (objects.intersect(k, ray, closer_than(range, best, k), h) && keep(h))
+                    return true;
+            }
+            return false;
+        };
         struct Entry {
             std::uint32_t first, count;
             float t;  // where the ray enters the child's box
@@ -259,46 +276,44 @@ private:
         Entry e{0, 0, range.min};  // the root: a wide node (count 0), number 0
         for (;;) {
             if (e.count > 0 && four_wide && tree_.block_of[e.first] != no_block) {
-                // A leaf of triangles: four at a time, then each lane hit asked in the leaf's order
-                // what the one-by-one loop asks it (the tie rule, the bound on t, its front).
+                // A leaf of triangles: four at a time (10.6), then each lane hit asked in the leaf's
+                // order what the one-by-one loop asks it (the tie rule, the bound on t, its front).
                 const FourTriangles* g = &tree_.blocks[tree_.block_of[e.first]];
                 for (std::uint32_t j = 0; j < e.count; j += 4, ++g) {
-                    count(Counter::intersection_tests, std::min<std::uint32_t>(4, e.count - j));
+                    const std::uint32_t n = std::min<std::uint32_t>(4, e.count - j);
                     const FourHits h = hit_four_triangles(*g, frame, Interval{range.min, reach.max});
-                    for (int i = 0; i < 4; ++i) {
+                    if (!h.tested) {  // 10.6's stub
+                        if (one_by_one(&tree_.object_index[e.first + j], n)) {
+                            hit = best;
+                            return true;
+                        }
+                        continue;
+                    }
+                    for (std::uint32_t i = 0; i < n; ++i) {
                         if (!(h.hit >> i & 1u))
                             continue;
                         const int k = g->object[i];
                         if (!closer_than(range, best, k).surrounds(h.t[i]))
                             continue;
-                        const int tri = objects.ref(k).index;
-                        if (bounded && !(h.t[i] > watertight_t_error(ray, objects.triangles[tri])))
+                        const Triangle& tri = objects.triangles[objects.ref(k).index];
+                        if (bounded && !(h.t[i] > watertight_t_error(ray, tri)))
                             continue;
-                        if (objects.one_sided && (*objects.one_sided)[tri] &&
-                            glm::dot(face_normal(objects.triangles[tri]), ray.dir) > 0.0f)
+                        if (objects.one_sided && (*objects.one_sided)[objects.ref(k).index] &&
+                            glm::dot(face_normal(tri), ray.dir) > 0.0f)
                             continue;  // its back
-                        best = {h.t[i], k, h.V[i] / h.det[i], h.W[i] / h.det[i]};
-                        found = true;
-                        if (any_hit) {
+                        if (keep({h.t[i], k, h.V[i] / h.det[i], h.W[i] / h.det[i]})) {
+                            // Counted as the one-by-one loop counts: the tests up to the hit.
+                            count(Counter::intersection_tests, i + 1);
                             hit = best;
                             return true;
                         }
-                        reach.max = std::nextafter(best.t, infinity);
                     }
+                    count(Counter::intersection_tests, n);
                 }
             } else if (e.count > 0) {
-                for (std::uint32_t j = 0; j < e.count; ++j) {
-                    const int k = static_cast<int>(tree_.object_index[e.first + j]);
-                    ObjectHit h;
-                    if (objects.intersect(k, ray, closer_than(range, best, k), h)) {
-                        best = h;
-                        found = true;
-                        if (any_hit) {
-                            hit = best;
-                            return true;
-                        }
-                        reach.max = std::nextafter(best.t, infinity);
-                    }
+                if (one_by_one(&tree_.object_index[e.first], e.count)) {
+                    hit = best;
+                    return true;
                 }
             } else {
                 const WideNode& node = tree_.nodes[e.first];

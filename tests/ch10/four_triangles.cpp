@@ -2,8 +2,10 @@
 // triangle: hit or miss, t, beta and gamma to the bit.
 #include "10_hierarchies/10_hierarchies.hpp"
 #include "common/random.hpp"
+#include "tests/ch02/triangle_cases.hpp"
 #include "tests/grader/graded.hpp"
 
+#include <cstdio>
 #include <string>
 
 using namespace rt;
@@ -12,6 +14,14 @@ using namespace rt::grader;
 namespace {
 
 const char* const lanes = lanes_kind;
+
+// A float to the last bit that tells two floats apart (9 significant digits).
+std::string nine_digits(float x)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(x));
+    return text;
+}
 
 struct Tally {
     int lanes_checked = 0, hits = 0, on_edges = 0, without_area = 0;
@@ -60,15 +70,14 @@ Tally check_blocks(Rng& rng, int blocks, Point point, Direction direction, bool 
                 continue;
             }
             const std::optional<TriangleHit<float>> want = hit_triangle_watertight(ray, tris[i], range);
-            INFO(show(ray) << ", t in (" << range.min << ", " << range.max << "), triangle " << show(tris[i].a) << ", "
+            INFO(show(ray) << ", t in (" << nine_digits(range.min) << ", " << nine_digits(range.max) << "), triangle " << show(tris[i].a) << ", "
                  << show(tris[i].b) << ", " << show(tris[i].c) << " in lane " << i << " of " << n << " (" << lanes
                  << "): the watertight test says "
-                 << (want ? "t = " + std::to_string(want->t) + ", beta = " + std::to_string(want->beta) +
-                                ", gamma = " + std::to_string(want->gamma)
+                 << (want ? "t = " + nine_digits(want->t) + ", beta = " + nine_digits(want->beta) + ", gamma = " + nine_digits(want->gamma)
                           : std::string("missed"))
                  << "; hit_four_triangles "
-                 << (hit ? "t = " + std::to_string(got.t[i]) + ", beta = " + std::to_string(got.V[i] / got.det[i]) +
-                               ", gamma = " + std::to_string(got.W[i] / got.det[i])
+                 << (hit ? "t = " + nine_digits(got.t[i]) + ", beta = " + nine_digits(got.V[i] / got.det[i]) +
+                               ", gamma = " + nine_digits(got.W[i] / got.det[i])
                          : std::string("missed")));
             REQUIRE(hit == want.has_value());
             ++tally.lanes_checked;
@@ -87,7 +96,7 @@ Tally check_blocks(Rng& rng, int blocks, Point point, Direction direction, bool 
 
 }  // namespace
 
-GRADED_TEST("hit_four_triangles: each lane answers as the watertight test does, through edges, corners and triangles without area",
+GRADED_TEST("hit_four_triangles: each lane answers as the watertight test does, through edges and corners, from both sides, in blocks of one to four",
             "10.6", 5)
 {
     // Corners on a coarse lattice, rays from lattice points along lattice directions (some with a 0
@@ -142,10 +151,42 @@ GRADED_TEST("hit_four_triangles: a hit counts only with t strictly inside the ra
     for (const auto& c : cases) {
         const FourHits got = hit_four_triangles(g, ray_frame(ray), c.range);
         INFO(show(ray) << " at the triangle " << show(tri.a) << ", " << show(tri.b) << ", " << show(tri.c)
-                       << " (t = 2), range (" << c.range.min << ", " << c.range.max << "): lanes hit " << got.hit
-                       << ", lane 0's t " << (got.hit & 1u ? std::to_string(got.t[0]) : std::string("-")));
+                       << " (t = 2), range (" << nine_digits(c.range.min) << ", " << nine_digits(c.range.max) << "): lanes hit "
+                       << got.hit << ", lane 0's t " << (got.hit & 1u ? nine_digits(got.t[0]) : std::string("-")));
         CHECK(got.hit == (c.hit ? 1u : 0u));
         if (c.hit && (got.hit & 1u))
             CHECK(got.t[0] == 2.0f);
     }
+}
+
+namespace {
+
+// 10.6 asked of one triangle, as 02.5 is: the triangle in one lane of a block (a different lane
+// each call), the other lanes holding a triangle the ray hits, which must not change its answer.
+std::optional<TriangleHit<float>> one_lane_of_four(const Ray& ray, const Triangle& tri, Interval range)
+{
+    static int calls = 0;
+    const std::uint32_t lane = static_cast<std::uint32_t>(calls++ % 4);
+    Triangle tris[4];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+        const point3 p = ray.at(1.0f);
+        const vec3 side = glm::normalize(glm::cross(ray.dir, vec3(0.3f, 0.5f, 0.7f)));
+        const vec3 up = glm::cross(ray.dir, side);
+        tris[i] = i == lane ? tri : Triangle{p - side - up, p + side - up, p + up};
+    }
+    Objects objects;
+    objects.triangles = tris;
+    objects.triangle_count = 4;
+    const std::uint32_t index[4] = {0, 1, 2, 3};
+    const FourHits got = hit_four_triangles(four_triangles(objects, index, 4), ray_frame(ray), range);
+    if (!(got.hit >> lane & 1u))
+        return std::nullopt;
+    return TriangleHit<float>{got.t[lane], got.V[lane] / got.det[lane], got.W[lane] / got.det[lane]};
+}
+
+}  // namespace
+
+GRADED_TEST("hit_four_triangles: triangles without area are never hit, pbrt-v4's BadCase included", "10.6", 2)
+{
+    triangles::degenerate(&one_lane_of_four, {0, 1, 2, 3, 4, 5, 6});
 }
