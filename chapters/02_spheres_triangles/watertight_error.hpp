@@ -12,6 +12,7 @@
 // carries errors of 1e5 u whatever the ray's own length.
 #pragma once
 
+#include "02_spheres_triangles/02_spheres_triangles.hpp"
 #include "02_spheres_triangles/shapes.hpp"
 #include "common/ray.hpp"
 
@@ -54,7 +55,16 @@ inline float watertight_t_error(const Ray& ray, const Triangle& tri)
     const float Ax = A[kx] - Sx * A[kz], Ay = A[ky] - Sy * A[kz];
     const float Bx = B[kx] - Sx * B[kz], By = B[ky] - Sy * B[kz];
     const float Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
-    const float U = Cx * By - Cy * Bx, V = Ax * Cy - Ay * Cx, W = Bx * Ay - By * Ax;
+    float U = cross_2d(Cx, Cy, Bx, By), V = cross_2d(Ax, Ay, Cx, Cy), W = cross_2d(Bx, By, Ax, Ay);
+    if (U == 0.0f || V == 0.0f || W == 0.0f) {
+        // 02.5's fallback, followed here too: the test divides by the det of the edge functions
+        // recomputed in double. Without it, a nearly collinear triangle whose float edge functions
+        // cancel to det = 0 got a bound of 0 while 02.5 hit it at a t that is all rounding (a ray
+        // leaving the triangle's own plane found it again 2e-8 along).
+        U = static_cast<float>(cross_2d<double>(Cx, Cy, Bx, By));
+        V = static_cast<float>(cross_2d<double>(Ax, Ay, Cx, Cy));
+        W = static_cast<float>(cross_2d<double>(Bx, By, Ax, Ay));
+    }
     const float det = U + V + W;
     if (!(det != 0.0f))
         return 0.0f;
