@@ -43,7 +43,8 @@ namespace rt {
 // tiny floats to 0 (-ffast-math), a direction of huge components has 1 / d = 0, every slab NaN,
 // and every box entered.
 struct alignas(64) WideNode {
-    float box[2][3][4];       // box[0][a][i]: child i's min along axis a; box[1][a][i]: its max
+    float min[3][4];
+    float max[3][4];
     std::uint32_t first[4];
     std::uint16_t count[4];   // as BvhNode::count: at most 65535 objects a leaf
     std::uint32_t occupied;   // bit i: child i exists
@@ -63,34 +64,6 @@ struct WideBvh {
 // Why 3 a level: a visit pops one entry and pushes at most four, and a wide level spans at least
 // one binary level, of which a path has fewer than bvh_stack_size (bvh.hpp's depth limit).
 constexpr int wide_stack_size = 3 * bvh_stack_size + 1;
-
-// The ray as enter_boxes reads it, worked out once per query rather than at every node: each
-// axis's origin and 1 / d_i (RaySlabs') in all four lanes, and which of a node's two planes the ray
-// meets first (box[1], the max, when it runs down the axis). At every node, the broadcasts and the
-// choice of planes were a fifth of the walk's instructions.
-struct FourSlabs {
-#if RT_WIDE_SSE
-    __m128 o[3], inv[3];
-#else
-    float o[3], inv[3];
-#endif
-    int near[3], far[3];
-
-    explicit FourSlabs(const RaySlabs& slabs)
-    {
-        for (int a = 0; a < 3; ++a) {
-#if RT_WIDE_SSE
-            o[a] = _mm_set1_ps(slabs.origin[a]);
-            inv[a] = _mm_set1_ps(slabs.inv_dir[a]);
-#else
-            o[a] = slabs.origin[a];
-            inv[a] = slabs.inv_dir[a];
-#endif
-            near[a] = slabs.down[a] ? 1 : 0;
-            far[a] = 1 - near[a];
-        }
-    }
-};
 
 // Asks the processor to start loading `bytes` from p into its cache, and goes on: the wide tree
 // asks it for each child it pushes (its node, or its leaf's first block), which then arrives while
@@ -118,15 +91,15 @@ inline void prefetch(const void* p, std::size_t bytes)
 // SSE's max and min return their second operand when either is NaN, as the scalar test's
 // `t_near > t0 ? t_near : t0` keeps t0: a NaN slab (an origin on a face, d_i = 0) leaves the
 // interval alone.
-inline unsigned enter_boxes(const WideNode& node, const FourSlabs& slabs, Interval reach, float t0_out[4])
+inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interval reach, float t0_out[4])
 {
 #if RT_WIDE_SSE
     __m128 t0 = _mm_set1_ps(reach.min), t1 = _mm_set1_ps(reach.max);
     const __m128 widening = _mm_set1_ps(slab_far_widening);
     for (int a = 0; a < 3; ++a) {
-        const __m128 near_plane = _mm_loadu_ps(node.box[slabs.near[a]][a]);
-        const __m128 far_plane = _mm_loadu_ps(node.box[slabs.far[a]][a]);
-        const __m128 o = slabs.o[a], inv = slabs.inv[a];
+        const __m128 near_plane = _mm_loadu_ps(slabs.down[a] ? node.max[a] : node.min[a]);
+        const __m128 far_plane = _mm_loadu_ps(slabs.down[a] ? node.min[a] : node.max[a]);
+        const __m128 o = _mm_set1_ps(slabs.origin[a]), inv = _mm_set1_ps(slabs.inv_dir[a]);
         const __m128 t_near = _mm_mul_ps(_mm_sub_ps(near_plane, o), inv);
         const __m128 t_far = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, o), inv), widening);
         t0 = _mm_max_ps(t_near, t0);
@@ -142,9 +115,9 @@ inline unsigned enter_boxes(const WideNode& node, const FourSlabs& slabs, Interv
         t1[i] = reach.max;
     }
     for (int a = 0; a < 3; ++a) {
-        const float* near_plane = node.box[slabs.near[a]][a];
-        const float* far_plane = node.box[slabs.far[a]][a];
-        const float o = slabs.o[a], inv = slabs.inv[a];
+        const float* near_plane = slabs.down[a] ? node.max[a] : node.min[a];
+        const float* far_plane = slabs.down[a] ? node.min[a] : node.max[a];
+        const float o = slabs.origin[a], inv = slabs.inv_dir[a];
         for (int i = 0; i < 4; ++i) {
             const float t_near = (near_plane[i] - o) * inv;
             const float t_far = (far_plane[i] - o) * inv * slab_far_widening;
@@ -235,8 +208,8 @@ private:
     static void set_child(WideNode& w, int i, const Bounds& box, std::uint32_t first, std::uint16_t count)
     {
         for (int a = 0; a < 3; ++a) {
-            w.box[0][a][i] = box.min[a];
-            w.box[1][a][i] = box.max[a];
+            w.min[a][i] = box.min[a];
+            w.max[a][i] = box.max[a];
         }
         w.first[i] = first;
         w.count[i] = count;
@@ -289,7 +262,7 @@ private:
     {
         if (tree_.nodes.empty() || !valid_ray(ray))
             return false;
-        const FourSlabs slabs{RaySlabs(ray)};
+        const RaySlabs slabs(ray);
         // Four triangles at once where the query asks for the watertight test (chapter 04 on);
         // the other tests go one by one through the object list.
         const bool bounded = objects.tests.triangle == TriangleTest::watertight_bounded;

@@ -35,8 +35,8 @@ Bounds child_box(const WideNode& w, int i)
 {
     Bounds b;
     for (int a = 0; a < 3; ++a) {
-        b.min[a] = w.box[0][a][i];
-        b.max[a] = w.box[1][a][i];
+        b.min[a] = w.min[a][i];
+        b.max[a] = w.max[a][i];
     }
     return b;
 }
@@ -85,8 +85,8 @@ TEST_CASE("the four boxes of a wide node are entered exactly when the slab test 
                 boxes[i] = {glm::min(p, q), glm::max(p, q)};
             }
             for (int a = 0; a < 3; ++a) {
-                node.box[0][a][i] = boxes[i].min[a];
-                node.box[1][a][i] = boxes[i].max[a];
+                node.min[a][i] = boxes[i].min[a];
+                node.max[a][i] = boxes[i].max[a];
             }
         }
         vec3 d(lattice(), lattice(), lattice());
@@ -98,7 +98,7 @@ TEST_CASE("the four boxes of a wide node are entered exactly when the slab test 
         const Interval reach{rng.next_float() < 0.5f ? 0.0f : 1.0f, rng.next_float() < 0.5f ? infinity : 2.0f};
         const RaySlabs slabs(ray);
         float t0[4];
-        const unsigned got = enter_boxes(node, FourSlabs(slabs), reach, t0);
+        const unsigned got = enter_boxes(node, slabs, reach, t0);
         for (int i = 0; i < 4; ++i) {
             const std::optional<Interval> want = slab_interval(boxes[i], slabs, reach);
             const bool in = got >> i & 1u;
