@@ -46,6 +46,13 @@ struct FourTriangles {
     float p[3][3][4];
     std::int32_t object[4];   // each lane's object number
     std::uint32_t with_area;  // bit i: lane i holds a triangle with area (02.5 never hits one without)
+
+    // Lane i's triangle, the scene's own floats: what the wide tree asks of a lane hit (chapter 04's
+    // bound on t, which face the ray meets) without reading the scene's arrays again.
+    Triangle triangle(int i) const
+    {
+        return {{p[0][0][i], p[0][1][i], p[0][2][i]}, {p[1][0][i], p[1][1][i], p[1][2][i]}, {p[2][0][i], p[2][1][i], p[2][2][i]}};
+    }
 };
 
 // What the test of a block finds (10.6): the lanes hit, and for each lane hit its t, and the edge
