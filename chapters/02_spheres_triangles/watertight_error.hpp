@@ -60,7 +60,7 @@ inline float watertight_t_error(const Ray& ray, const Triangle& tri)
         // 02.5's fallback, followed here too: the test divides by the det of the edge functions
         // recomputed in double. Without it, a nearly collinear triangle whose float edge functions
         // cancel to det = 0 got a bound of 0 while 02.5 hit it at a t that is all rounding (a ray
-        // leaving the triangle's own plane found it again 2e-8 along).
+        // leaving the triangle's own plane found it again 1e-8 to 3e-8 along).
         U = static_cast<float>(cross_2d<double>(Cx, Cy, Bx, By));
         V = static_cast<float>(cross_2d<double>(Ax, Ay, Cx, Cy));
         W = static_cast<float>(cross_2d<double>(Bx, By, Ax, Ay));

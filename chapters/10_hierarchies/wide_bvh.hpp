@@ -18,10 +18,11 @@
 // test (common/bounds.hpp) against the range that could still beat the best hit, so the boxes
 // around the nearest object are always entered, and every object is asked with closer_than.
 //
-// Its leaves are the binary tree's; a leaf of triangles only is also copied into blocks of four
-// (four_triangles.hpp) at the build, and a query that asks for the watertight test (chapter 04 on)
-// tests each block with your 10.6, four triangles in one pass, then asks each lane hit, in the
-// leaf's order, what the one-by-one loop asks an object ("Four triangles at once" in the lesson).
+// Its leaves are the binary tree's; a leaf of triangles only is copied into blocks of four
+// (four_triangles.hpp) at the build, its node pointing at them, and a query that asks for the
+// watertight test (chapter 04 on) tests each block with your 10.6, four triangles in one pass, then
+// asks each lane hit what the one-by-one loop asks an object, nearest first for a closest hit, in the
+// leaf's order for an any-hit query ("Four triangles at once" in the lesson).
 #pragma once
 
 #include "10_hierarchies/bvh.hpp"
@@ -325,16 +326,18 @@ private:
                 return false;
             }
             // Nearest first, by t and then object number (closer_than's order): the first lane kept
-            // is the block's answer, and the bound on t is worked out about once a block, not for
-            // every lane hit that beats the best so far. A lane that fails closer_than ends it: every
-            // lane after it fails too.
+            // is the block's answer (every lane after it would fail closer_than), and the bound on t
+            // is worked out about once a block, not for every lane hit that beats the best so far.
+            // Only the block's n lanes, and a lane that fails is passed over, not taken to end the
+            // block: a 10.6 that breaks its contract (a hit in an empty lane, a NaN t, t at the
+            // range's start) costs its own lanes, not the others'.
             count(Counter::intersection_tests, n);
-            for (unsigned left = h.hit; left != 0;) {
+            for (unsigned left = h.hit & ((1u << n) - 1u); left != 0;) {
                 int i = -1;
                 for (int l = 0; l < 4; ++l)
                     if (left >> l & 1u && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
                         i = l;
-                if (!closer_than(range, best, g.object[i]).surrounds(h.t[i]) || lane_kept(g, h, i))
+                if (lane_kept(g, h, i))
                     break;
                 left &= ~(1u << i);
             }

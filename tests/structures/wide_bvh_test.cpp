@@ -120,19 +120,33 @@ TEST_CASE("the four boxes of a wide node are entered exactly when the slab test 
 
 TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once, with its box", "[structures]")
 {
-    const LitScene scene = lit_scene(generated_scene(write_tree, 4, "tree 4"));
-    const Objects objects = objects_of(scene, lit_tests);
-    for (const int leaf_size : {1, 4}) {
+    // The tree (spheres, cones, and a floor of triangles: leaves of each kind) and a mountain
+    // (triangles and four spheres: many leaves in blocks).
+    for (const auto& [scene, leaf_size] : {std::pair{lit_scene(generated_scene(write_tree, 4, "tree 4")), 1},
+                                            std::pair{lit_scene(generated_scene(write_tree, 4, "tree 4")), 4},
+                                            std::pair{lit_scene(generated_scene(write_mountain, 4, "mountain 4")), 4}}) {
+        const Objects objects = objects_of(scene, lit_tests);
         BvhSettings s;
         s.leaf_size = leaf_size;
         const BvhAccel binary(objects, s);
         const WideBvhAccel wide(objects, s);
-        // The binary leaves by their first object: each must appear once, with the same count and box.
-        std::map<std::uint32_t, std::pair<std::uint32_t, Bounds>> leaves;
+        // The binary leaves by their first object number: each must appear once, with the same
+        // objects and box. (A wide leaf of triangles names its objects in its blocks, another kind
+        // in object_index.)
+        std::map<std::uint32_t, std::pair<std::vector<std::uint32_t>, Bounds>> leaves;
+        const auto& order = binary.bvh().object_index;
         for (const BvhNode& n : binary.bvh().nodes)
             if (n.count > 0)
-                leaves[n.first] = {n.count, n.bounds()};
+                leaves[order[n.first]] = {{order.begin() + n.first, order.begin() + n.first + n.count}, n.bounds()};
         const WideBvh& w = wide.tree();
+        const auto objects_of_leaf = [&w](const WideNode& node, int i) {
+            std::vector<std::uint32_t> list;
+            for (std::uint32_t j = 0; j < node.count[i]; ++j)
+                list.push_back(node.in_blocks >> i & 1u ? static_cast<std::uint32_t>(w.blocks[node.first[i] + j / 4].object[j % 4])
+                                                        : w.object_index[node.first[i] + j]);
+            return list;
+        };
+        int block_leaves = 0;
         std::vector<int> referenced(w.nodes.size(), 0);
         std::map<std::uint32_t, int> seen;
         int empty_slots = 0;
@@ -160,16 +174,20 @@ TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once
                     CHECK(same_box(box, around));
                     continue;
                 }
-                const auto leaf = leaves.find(node.first[i]);
-                INFO("leaves of " << leaf_size << ": a wide leaf at object " << node.first[i] << " of " << node.count[i]);
+                const std::vector<std::uint32_t> held = objects_of_leaf(node, i);
+                block_leaves += node.in_blocks >> i & 1u;
+                const auto leaf = leaves.find(held[0]);
+                INFO("leaves of " << leaf_size << ": a wide leaf of " << node.count[i] << " objects from object " << held[0]
+                                  << (node.in_blocks >> i & 1u ? ", in blocks" : ""));
                 REQUIRE(leaf != leaves.end());
-                CHECK(leaf->second.first == node.count[i]);
+                CHECK(leaf->second.first == held);
                 CHECK(same_box(leaf->second.second, box));
-                ++seen[node.first[i]];
+                ++seen[held[0]];
             }
         INFO("leaves of " << leaf_size << ": " << leaves.size() << " binary leaves, " << seen.size() << " found in "
              << w.nodes.size() << " wide nodes (" << empty_slots << " empty slots)");
         CHECK(seen.size() == leaves.size());
+        CHECK(block_leaves > 0);  // the floor's triangles, at least
         for (const auto& [first, times] : seen)
             CHECK(times == 1);
         CHECK(referenced[0] == 0);  // the root
