@@ -69,9 +69,10 @@ constexpr int wide_stack_size = 3 * bvh_stack_size + 1;
 // Asks the processor to start loading `bytes` from p into its cache, and goes on: the wide tree
 // asks it for each child it pushes (its node, or its leaf's first block), which then arrives while
 // the nearer children are walked. On a mountain of half a million triangles (34 MB of tree), where
-// a visit waits on memory, that made queries 5% (incoherent rays) to 9% (primary) faster, and
-// 0-2% on the pyramid and the stadium (medians of three alternating runs). Where the lanes are
-// plain C++ (not x86), nothing is asked.
+// a visit waits on memory, that made queries 5% (incoherent rays) to 9% (primary) faster; on the
+// pyramid and the stadium, whose trees are about 1.5 MB, it moved them by -2% to +2%, within the
+// noise (medians of three alternating runs, two sets). Where the lanes are plain C++ (not x86),
+// nothing is asked.
 inline void prefetch(const void* p, std::size_t bytes)
 {
 #if RT_WIDE_SSE

@@ -122,10 +122,17 @@ TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once
 {
     // The tree (spheres, cones, and a floor of triangles: leaves of each kind) and a mountain
     // (triangles and four spheres: many leaves in blocks).
-    for (const auto& [scene, leaf_size] : {std::pair{lit_scene(generated_scene(write_tree, 4, "tree 4")), 1},
-                                            std::pair{lit_scene(generated_scene(write_tree, 4, "tree 4")), 4},
-                                            std::pair{lit_scene(generated_scene(write_mountain, 4, "mountain 4")), 4}}) {
-        const Objects objects = objects_of(scene, lit_tests);
+    const LitScene tree = lit_scene(generated_scene(write_tree, 4, "tree 4"));
+    const LitScene mountain = lit_scene(generated_scene(write_mountain, 4, "mountain 4"));
+    struct Case {
+        const char* name;
+        const LitScene& scene;
+        int leaf_size;
+    };
+    for (const Case& c : {Case{"tree 4", tree, 1}, Case{"tree 4", tree, 4}, Case{"mountain 4", mountain, 4}}) {
+        const int leaf_size = c.leaf_size;
+        INFO(c.name);
+        const Objects objects = objects_of(c.scene, lit_tests);
         BvhSettings s;
         s.leaf_size = leaf_size;
         const BvhAccel binary(objects, s);
@@ -187,7 +194,7 @@ TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once
         INFO("leaves of " << leaf_size << ": " << leaves.size() << " binary leaves, " << seen.size() << " found in "
              << w.nodes.size() << " wide nodes (" << empty_slots << " empty slots)");
         CHECK(seen.size() == leaves.size());
-        CHECK(block_leaves > 0);  // the floor's triangles, at least
+        CHECK(block_leaves > 0);  // the tree's floor, at least
         for (const auto& [first, times] : seen)
             CHECK(times == 1);
         CHECK(referenced[0] == 0);  // the root
