@@ -1,0 +1,117 @@
+// The BVH's build (chapter 10's bvh.hpp, given): each node's box is the box around what it holds,
+// every object lies in one leaf, a child holds the objects on its side of its parent's plane, and
+// the plane is the cheapest of the three axes, not only of the axis the centres spread along most.
+#include "10_hierarchies/bvh.hpp"
+#include "10_hierarchies/figure.hpp"
+#include "tests/ch07/agreement.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace rt;
+using namespace rt::grader;
+
+namespace {
+
+// The box the build gives object k: its own, grown by chapter 07's margin for the scene.
+Bounds grown_box(const Objects& objects, int k)
+{
+    return grown(objects.bounds(k), grid_margin_of(bounds_of_all(objects)));
+}
+
+bool same_box(const Bounds& a, const Bounds& b) { return a.min == b.min && a.max == b.max; }
+
+// What a subtree holds: the box around its objects' boxes, and the box around their centres.
+struct Held {
+    Bounds box, centres;
+};
+
+// Checks node n and everything under it; returns what it holds, counting each object's leaves in
+// `seen`.
+Held check_node(const Objects& objects, const Bvh& bvh, std::uint32_t n, std::map<std::uint32_t, int>& seen)
+{
+    const BvhNode& node = bvh.nodes[n];
+    INFO("node " << n << " of " << bvh.nodes.size() << ": " << show(node.bounds()));
+    Held held;
+    if (node.count > 0) {
+        for (std::uint32_t j = node.first; j < node.first + node.count; ++j) {
+            const Bounds box = grown_box(objects, static_cast<int>(bvh.object_index[j]));
+            held.box.grow(box);
+            held.centres.grow(box.centre());
+            ++seen[bvh.object_index[j]];
+        }
+    } else {
+        REQUIRE(node.first > n + 1);
+        REQUIRE(node.first < bvh.nodes.size());
+        const Held first = check_node(objects, bvh, n + 1, seen);
+        const Held second = check_node(objects, bvh, node.first, seen);
+        for (const Held& child : {first, second}) {
+            held.box.grow(child.box);
+            held.centres.grow(child.centres);
+        }
+        // The first child holds the lower centres along the node's axis (the traversal's near
+        // child when the ray goes the positive way).
+        const int a = node.axis;
+        REQUIRE(a < 3);
+        INFO("along axis " << a << ", the first child's centres lie in " << show(first.centres) << ", the second's in "
+                           << show(second.centres));
+        CHECK(first.centres.max[a] <= second.centres.min[a]);
+    }
+    // No looser (a ray would enter it for nothing), no tighter (it would miss what it holds).
+    INFO("the box around what it holds: " << show(held.box));
+    CHECK(same_box(node.bounds(), held.box));
+    return held;
+}
+
+}  // namespace
+
+TEST_CASE("the BVH's build: each box is the box around what it holds, and every object lies in one leaf", "[structures]")
+{
+    struct Case {
+        std::string name;
+        NffScene nff;
+    };
+    const std::vector<Case> cases{{"stadium 2", generated_scene(write_stadium, 2, "stadium 2")},
+                                  {"tree 3", generated_scene(write_tree, 3, "tree 3")},
+                                  {"mountain 5", generated_scene(write_mountain, 5, "mountain 5")}};
+    for (const Case& c : cases)
+        for (const int leaf_size : {1, 4}) {
+            INFO(c.name << ", leaves of " << leaf_size);
+            const LitScene scene = lit_scene(c.nff);
+            const Objects objects = objects_of(scene, lit_tests);  // reads the scene's arrays
+            BvhSettings s;
+            s.leaf_size = leaf_size;
+            const BvhAccel bvh(objects, s);
+            std::map<std::uint32_t, int> seen;
+            check_node(objects, bvh.bvh(), 0, seen);
+            CHECK(static_cast<int>(seen.size()) == objects.size());
+            for (const auto& [k, times] : seen) {
+                INFO("object " << k);
+                CHECK(times == 1);
+            }
+        }
+}
+
+TEST_CASE("the BVH splits two long rows apart, across the axis along which their centres spread most", "[structures]")
+{
+    // Two rows of 64 small spheres along x, 100 long, one at y = 0 and one at y = 10: the centres
+    // spread 10 times further along x, yet the cheapest plane lies between the rows (each child's
+    // box 100 x 1 x 1, against 50 x 11 x 1 for a plane across x). A build that bins only the
+    // widest axis cuts the rows in two along x.
+    LitScene scene;
+    scene.add_material({});
+    for (int row = 0; row < 2; ++row)
+        for (int i = 0; i < 64; ++i)
+            scene.add_sphere({point3(100.0f * static_cast<float>(i) / 63.0f, 10.0f * static_cast<float>(row), 0.0f), 0.5f}, 0);
+    const Objects objects = objects_of(scene, lit_tests);
+    const BvhAccel bvh(objects);
+    const Bvh& b = bvh.bvh();
+    REQUIRE(b.nodes.size() > 1);
+    REQUIRE(b.nodes[0].count == 0);
+    INFO("the root's axis: " << b.nodes[0].axis << "; its children's boxes: " << show(b.nodes[1].bounds()) << " and "
+                             << show(b.nodes[b.nodes[0].first].bounds()));
+    CHECK(b.nodes[0].axis == 1);
+    CHECK(b.nodes[1].bounds().max.y < 5.0f);
+    CHECK(b.nodes[b.nodes[0].first].bounds().min.y > 5.0f);
+}
