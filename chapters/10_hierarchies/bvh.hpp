@@ -46,6 +46,9 @@ public:
         if (settings.max_depth < 0 || settings.max_depth >= bvh_stack_size - 1)
             throw InputError("--max-depth must be between 0 and " + std::to_string(bvh_stack_size - 2) + ", got " +
                              std::to_string(settings.max_depth));
+        if (settings.bins < 2 || settings.bins > max_bins)
+            throw InputError("the BVH's bins must be between 2 and " + std::to_string(max_bins) + ", got " +
+                             std::to_string(settings.bins));
         build(objects);
     }
 
@@ -76,6 +79,8 @@ private:
     // The most objects a leaf can count (BvhNode::count is 16 bits): a larger group that 10.3 would
     // keep whole (or whose boxes all share one centre) is halved instead.
     static constexpr int max_leaf = std::numeric_limits<std::uint16_t>::max();
+    // A bound on BvhSettings::bins, so that a mistaken setting cannot ask for millions of bins a node.
+    static constexpr int max_bins = 1024;
 
     void build(const Objects& objects)
     {
@@ -94,8 +99,6 @@ private:
         }
         bvh_.object_index.resize(static_cast<std::size_t>(n));
         std::iota(bvh_.object_index.begin(), bvh_.object_index.end(), 0u);
-        for (std::vector<SahBin>& bins : bins_)
-            bins.resize(static_cast<std::size_t>(settings_.bins));
         if (n > 0)
             build_node(measure(0, n), 0);
         stats_.nodes = static_cast<int>(bvh_.nodes.size());
@@ -143,14 +146,15 @@ private:
             }
         } else if (n > settings_.leaf_size) {
             // A group of at most leaf_size is a leaf by 10.3's first rule, whatever its best split
-            // would cost, so it is not binned: over half the groups a build meets are that small.
+            // would cost, so it is not binned: about half the groups a build meets are that small.
             split = sah_split(g, depth, axis, left, right);
         }
         // Too many for one leaf (all at one centre, or a student's 10.3 keeping everything): halved
-        // in the objects' order.
+        // by the median along the axis, so the first child still holds the lower centres.
         if (!split && n > max_leaf) {
-            left = measure(g.begin, g.begin + n / 2);
-            right = measure(g.begin + n / 2, g.end);
+            const int middle = median_split(g.begin, g.end, axis);
+            left = measure(g.begin, middle);
+            right = measure(middle, g.end);
             split = true;
         }
         // Whatever 10.3 says, a path stays within the traversal's stack.
@@ -170,26 +174,26 @@ private:
     // The surface area heuristic's split of a group: its objects binned by centre along each axis
     // their centres spread along, in one pass (as Embree's builder bins, after Wald, "On fast
     // Construction of SAH-based Bounding Volume Hierarchies", 2007), the best plane of each axis
-    // (10.2), the cheapest of those unless 10.3 says leaf. Binning one axis only, the one the
-    // centres spread along most, made the teapot in a stadium's primary rays 5-10% slower (a
-    // stadium's seats spread widest along x, the teapot's detail along y). Fills in the children
-    // and the split's axis; false: a leaf.
+    // (10.2), the cheapest of those unless 10.3 says leaf. Binning only the axis the centres spread
+    // along most cost the teapot in a stadium 1.13x on its closest hits (the lesson's step 8).
+    // Fills in the children and the split's axis; false: a leaf.
     bool sah_split(const Group& g, int depth, int& axis, Group& left, Group& right)
     {
-        // Embree's count (its BinMapping): 32 bins for a group of 560 objects or more, 4 + n / 20
-        // for fewer, where more bins would cost more to sweep than they find.
+        // Embree's count (BinMapping in its kernels/builders/heuristic_binning.h: the lesser of its
+        // 32 bins and 4 + 0.05 n): 32 for a group of 560 objects or more, fewer below. The kit's
+        // reason to follow it: 10.2's sweep costs about the same for each bin, and a small group's
+        // planes are few, so a full 32 would make the build's small groups its most costly part.
         const int bins = std::min(settings_.bins, 4 + (g.end - g.begin) / 20);
-        if (bins < 2)
-            return false;  // no plane between bins
         const float* low = glm::value_ptr(g.centres.min);
         const vec3 spread = g.centres.extent();
         // Bins a spread wide, each spread / bins: a centre's bin is its distance from the lowest
         // times bins / spread (a multiplication, not a division, for each object and axis).
         float scale[3];
-        bool along[3];  // the axes the centres spread along (and whose scale is finite)
+        bool along[3];  // the axes the centres spread along, by a finite positive scale (not 0, NaN
+                        // or infinite: a spread of 0, infinity, NaN or too small to divide by)
         for (int a = 0; a < 3; ++a) {
             scale[a] = static_cast<float>(bins) / spread[a];
-            along[a] = spread[a] > 0.0f && scale[a] < infinity;
+            along[a] = scale[a] > 0.0f && scale[a] < infinity;
             bins_[a].assign(static_cast<std::size_t>(bins), SahBin{});
         }
         const auto bin_of = [&](std::uint32_t k, int a) {

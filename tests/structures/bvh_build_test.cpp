@@ -14,11 +14,6 @@ using namespace rt::grader;
 
 namespace {
 
-// The box the build gives object k: its own, grown by chapter 07's margin for the scene.
-Bounds grown_box(const Objects& objects, int k)
-{
-    return grown(objects.bounds(k), grid_margin_of(bounds_of_all(objects)));
-}
 
 bool same_box(const Bounds& a, const Bounds& b) { return a.min == b.min && a.max == b.max; }
 
@@ -28,15 +23,18 @@ struct Held {
 };
 
 // Checks node n and everything under it; returns what it holds, counting each object's leaves in
-// `seen`.
-Held check_node(const Objects& objects, const Bvh& bvh, std::uint32_t n, std::map<std::uint32_t, int>& seen)
+// `seen`. `margin`: chapter 07's margin for the scene, by which the build grows each object's box.
+Held check_node(const Objects& objects, float margin, const Bvh& bvh, std::uint32_t n, std::map<std::uint32_t, int>& seen)
 {
     const BvhNode& node = bvh.nodes[n];
     INFO("node " << n << " of " << bvh.nodes.size() << ": " << show(node.bounds()));
     Held held;
     if (node.count > 0) {
+        REQUIRE(node.first + node.count <= bvh.object_index.size());
         for (std::uint32_t j = node.first; j < node.first + node.count; ++j) {
-            const Bounds box = grown_box(objects, static_cast<int>(bvh.object_index[j]));
+            INFO("its object " << bvh.object_index[j]);
+            REQUIRE(bvh.object_index[j] < static_cast<std::uint32_t>(objects.size()));
+            const Bounds box = grown(objects.bounds(static_cast<int>(bvh.object_index[j])), margin);
             held.box.grow(box);
             held.centres.grow(box.centre());
             ++seen[bvh.object_index[j]];
@@ -44,8 +42,8 @@ Held check_node(const Objects& objects, const Bvh& bvh, std::uint32_t n, std::ma
     } else {
         REQUIRE(node.first > n + 1);
         REQUIRE(node.first < bvh.nodes.size());
-        const Held first = check_node(objects, bvh, n + 1, seen);
-        const Held second = check_node(objects, bvh, node.first, seen);
+        const Held first = check_node(objects, margin, bvh, n + 1, seen);
+        const Held second = check_node(objects, margin, bvh, node.first, seen);
         for (const Held& child : {first, second}) {
             held.box.grow(child.box);
             held.centres.grow(child.centres);
@@ -75,16 +73,26 @@ TEST_CASE("the BVH's build: each box is the box around what it holds, and every 
     const std::vector<Case> cases{{"stadium 2", generated_scene(write_stadium, 2, "stadium 2")},
                                   {"tree 3", generated_scene(write_tree, 3, "tree 3")},
                                   {"mountain 5", generated_scene(write_mountain, 5, "mountain 5")}};
+    struct Setting {
+        const char* name;
+        BvhSettings settings;
+    };
+    BvhSettings leaves_of_1, shallow, median;
+    leaves_of_1.leaf_size = 1;
+    shallow.max_depth = 4;
+    median.split = BvhSplit::median;
+    const std::vector<Setting> settings{{"SAH, leaves of 4", {}},
+                                        {"SAH, leaves of 1", leaves_of_1},
+                                        {"SAH, depth limit 4", shallow},
+                                        {"median split", median}};
     for (const Case& c : cases)
-        for (const int leaf_size : {1, 4}) {
-            INFO(c.name << ", leaves of " << leaf_size);
+        for (const Setting& setting : settings) {
+            INFO(c.name << ", " << setting.name);
             const LitScene scene = lit_scene(c.nff);
             const Objects objects = objects_of(scene, lit_tests);  // reads the scene's arrays
-            BvhSettings s;
-            s.leaf_size = leaf_size;
-            const BvhAccel bvh(objects, s);
+            const BvhAccel bvh(objects, setting.settings);
             std::map<std::uint32_t, int> seen;
-            check_node(objects, bvh.bvh(), 0, seen);
+            check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
             CHECK(static_cast<int>(seen.size()) == objects.size());
             for (const auto& [k, times] : seen) {
                 INFO("object " << k);
@@ -114,4 +122,24 @@ TEST_CASE("the BVH splits two long rows apart, across the axis along which their
     CHECK(b.nodes[0].axis == 1);
     CHECK(b.nodes[1].bounds().max.y < 5.0f);
     CHECK(b.nodes[b.nodes[0].first].bounds().min.y > 5.0f);
+}
+
+TEST_CASE("the BVH refuses a bin count it cannot use, and names it", "[structures]")
+{
+    LitScene scene;
+    scene.add_material({});
+    scene.add_sphere({point3(0.0f), 1.0f}, 0);
+    const Objects objects = objects_of(scene, lit_tests);
+    for (const int bins : {-1, 0, 1, 1025}) {
+        BvhSettings s;
+        s.bins = bins;
+        INFO(bins << " bins");
+        CHECK_THROWS_WITH(BvhAccel(objects, s), rt::grader::contains_text("between 2 and 1024, got " + std::to_string(bins)));
+    }
+    for (const int bins : {2, 1024}) {
+        BvhSettings s;
+        s.bins = bins;
+        INFO(bins << " bins");
+        CHECK_NOTHROW(BvhAccel(objects, s));
+    }
 }

@@ -201,12 +201,19 @@ TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once
         for (std::size_t k = 1; k < referenced.size(); ++k)
             CHECK(referenced[k] == 1);
         // A binary tree of n leaves has n - 1 inner nodes; each wide node takes the place of one to
-        // three of them: a collapse that opened none would make n - 1, each holding two children.
-        // Short of four only where every child left to open is a leaf (about 3 a node here).
+        // three of them: a collapse that opened none would make n - 1. A wide node holds four
+        // children unless every child it could open is a leaf.
         CHECK(w.nodes.size() <= leaves.size() - 1);
-        const double children_a_node = static_cast<double>(4 * w.nodes.size() - empty_slots) / static_cast<double>(w.nodes.size());
-        INFO(children_a_node << " children a wide node");
-        CHECK(children_a_node >= 2.5);
+        for (std::size_t k = 0; k < w.nodes.size(); ++k) {
+            const WideNode& node = w.nodes[k];
+            if (node.occupied == 0xfu)
+                continue;
+            for (int i = 0; i < 4; ++i) {
+                INFO("leaves of " << leaf_size << ": wide node " << k << " holds fewer than four children, yet its child " << i
+                                  << " is an inner node");
+                CHECK(!(node.occupied >> i & 1u && node.count[i] == 0));
+            }
+        }
     }
 }
 
