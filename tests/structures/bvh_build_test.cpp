@@ -92,7 +92,9 @@ TEST_CASE("the BVH's build: each box is the box around what it holds, and every 
             const Objects objects = objects_of(scene, lit_tests);  // reads the scene's arrays
             const BvhAccel bvh(objects, setting.settings);
             std::map<std::uint32_t, int> seen;
-            check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+                        check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+            INFO("depth " << bvh.stats().depth << ", limit " << setting.settings.max_depth);
+            CHECK(bvh.stats().depth <= setting.settings.max_depth);
             CHECK(static_cast<int>(seen.size()) == objects.size());
             for (const auto& [k, times] : seen) {
                 INFO("object " << k);
