@@ -136,14 +136,16 @@ private:
         int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
 
         Group left, right;  // the children, once split
+        const auto halve = [&] {
+            const int middle = median_split(g.begin, g.end, axis);
+            left = measure(g.begin, middle);
+            right = measure(middle, g.end);
+            return true;
+        };
         bool split = false;
         if (settings_.split == BvhSplit::median) {
-            if (n > settings_.leaf_size && depth < settings_.max_depth) {
-                const int middle = median_split(g.begin, g.end, axis);
-                left = measure(g.begin, middle);
-                right = measure(middle, g.end);
-                split = true;
-            }
+            if (n > settings_.leaf_size && depth < settings_.max_depth)
+                split = halve();
         } else if (n > settings_.leaf_size) {
             // A group of at most leaf_size is a leaf by 10.3's first rule, whatever its best split
             // would cost, so it is not binned: about half the groups a build meets are that small.
@@ -151,12 +153,8 @@ private:
         }
         // Too many for one leaf (all at one centre, or a student's 10.3 keeping everything): halved
         // by the median along the axis, so the first child still holds the lower centres.
-        if (!split && n > max_leaf) {
-            const int middle = median_split(g.begin, g.end, axis);
-            left = measure(g.begin, middle);
-            right = measure(middle, g.end);
-            split = true;
-        }
+        if (!split && n > max_leaf)
+            split = halve();
         // Whatever 10.3 says, a path stays within the traversal's stack.
         if (depth >= bvh_stack_size - 2 && n <= max_leaf)
             split = false;

@@ -145,3 +145,19 @@ TEST_CASE("the BVH refuses a bin count it cannot use, and names it", "[structure
         CHECK_NOTHROW(BvhAccel(objects, s));
     }
 }
+
+TEST_CASE("more objects at one centre than a leaf can count are halved, each object still in one leaf", "[structures]")
+{
+    // 70000 spheres around one point: no plane separates them, and a leaf counts at most 65535.
+    LitScene scene;
+    scene.add_material({});
+    for (int i = 0; i < 70000; ++i)
+        scene.add_sphere({point3(1.0f, 2.0f, 3.0f), 0.5f + 1e-6f * static_cast<float>(i % 7)}, 0);
+    const Objects objects = objects_of(scene, lit_tests);
+    const BvhAccel bvh(objects);
+    std::map<std::uint32_t, int> seen;
+    check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+    CHECK(static_cast<int>(seen.size()) == objects.size());
+    INFO(bvh.stats().nodes << " nodes, " << bvh.stats().leaves << " leaves");
+    CHECK(bvh.stats().leaves >= 2);
+}
