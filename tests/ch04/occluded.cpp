@@ -2,6 +2,11 @@
 #include "02_spheres_triangles/mesh_scene.hpp"
 #include "tests/ch04/describe.hpp"
 
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <tuple>
+
 using namespace rt;
 using namespace rt::grader;
 
@@ -170,4 +175,73 @@ STABILITY_TEST("occluded: a light inside a closed object is hidden from every po
          "feelers from outside aimed through each of its " << mesh.vertices.size() << " vertices: " << slipped
          << " were not blocked (the first from " << show(first) << "), expected every one blocked");
     CHECK(slipped == 0);
+}
+
+namespace {
+
+// A triangle across the feeler that runs up the y axis from the origin, in the plane y = height,
+// 2 `size` wide: its corners put the feeler at weights 1/4, 1/4, 1/2 of it, so the watertight test's
+// t is the height itself, bit for bit (every sum it forms is the height times a power of two).
+Triangle across_y_axis(float height, float size)
+{
+    return {{-size, height, -size}, {size, height, -size}, {0, height, size}};
+}
+
+// The t at which the given watertight test meets `tri` from the origin straight up: the occluder's
+// true place on the feeler, as occluded's own tests see it.
+float t_straight_up(const Triangle& tri)
+{
+    const std::optional<TriangleHit<float>> h =
+        hit_triangle_watertight(Ray{{0, 0, 0}, {0, 1, 0}}, tri, Interval{0.0f, infinity});
+    return h ? h->t : -1.0f;
+}
+
+}  // namespace
+
+GRADED_TEST("occluded: on feelers 2^-10 to 2^20 long, an occluder exactly at d (1 - shadow_epsilon) or past it does not block, one a float step nearer does", "04.2", 2)
+{
+    // Powers of two, so that d (1 - shadow_epsilon), d - d shadow_epsilon and the same in double
+    // all round to one float: the end of the range is the same however the product is written.
+    for (const float d : {0x1p-10f, 1.0f, 8.0f, 0x1p20f}) {
+        const point3 light{0, d, 0};
+        const float end = d * (1.0f - shadow_epsilon);
+        const struct {
+            float height;
+            bool blocked;
+            const char* where;
+        } occluders[] = {
+            {std::nextafter(end, 0.0f), true, "one float step before the end of the range, d (1 - shadow_epsilon)"},
+            {end, false, "exactly at the end of the range, d (1 - shadow_epsilon): the range is open"},
+            {std::nextafter(end, infinity), false, "one float step past the end of the range"},
+            {d, false, "exactly at the light"},
+            {std::nextafter(d, infinity), false, "one float step past the light"},
+            {0.5f * d, true, "halfway to the light"},
+        };
+        for (const auto& o : occluders) {
+            const Triangle tri = across_y_axis(o.height, d);
+            const float t = t_straight_up(tri);
+            std::ostringstream why;
+            why.precision(9);
+            why << "the feeler is " << d << " long, its range ends at " << end << ", and the triangle lies at t = " << t
+                << ", " << o.where;
+            check({scene_of({}, {tri}), ground, light, 0.0f, o.blocked, why.str().c_str()});
+        }
+    }
+}
+
+GRADED_TEST("occluded: an occluder exactly at t_min does not block, one a float step farther does", "04.2", 1)
+{
+    const point3 light{0, 8, 0};
+    for (const float t_min : {0.5f, 0.0625f, 3.0f}) {
+        for (const auto& [height, blocked, where] :
+             {std::tuple<float, bool, const char*>{t_min, false, "exactly at t_min: the range is open"},
+              {std::nextafter(t_min, infinity), true, "one float step past t_min"},
+              {std::nextafter(t_min, 0.0f), false, "one float step before t_min"}}) {
+            const Triangle tri = across_y_axis(height, 8.0f);
+            std::ostringstream why;
+            why.precision(9);
+            why << "t_min = " << t_min << " and the triangle lies at t = " << t_straight_up(tri) << ", " << where;
+            check({scene_of({}, {tri}), ground, light, t_min, blocked, why.str().c_str()});
+        }
+    }
 }
