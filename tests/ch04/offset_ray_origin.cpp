@@ -190,3 +190,30 @@ STABILITY_TEST("offset_ray_origin: at 1e5, where 100000 + 0.00001 == 100000 in f
         REQUIRE_FALSE(rehit);
     }
 }
+
+GRADED_TEST("offset_ray_origin: a coordinate of exactly 1/32 or -1/32 takes the ulp step, a float nearer 0 the n_i / 65536 step, a float farther the ulp step", "04.3", 2)
+{
+    // "Below 1/32" is strict: 1/32 itself is moved in its own ulps. Both signs of p_i, both ways
+    // along n, and p_i just below a power of two, where 256 ulps cross into the next exponent (the
+    // bit pattern's integer addition steps across it; p + 256 ulp(p) does not).
+    const float edge = offset_origin;
+    const vec3 n = glm::normalize(vec3(0.6f, -0.48f, 0.64f));
+    for (const float x : {edge, std::nextafter(edge, 0.0f), std::nextafter(edge, 1.0f)})
+        for (const float sign : {1.0f, -1.0f})
+            for (const vec3& dir : {n, -n}) {
+                const float px = sign * x;
+                check_exact(point3(px, px, px), n, dir);
+                check_exact(point3(px, -px, std::nextafter(2.0f, 0.0f)), n, dir);
+            }
+}
+
+GRADED_TEST("offset_ray_origin: n is turned only when n.dir < 0: a dir along the surface (n.dir = 0) keeps n, the least negative n.dir turns it", "04.3", 1)
+{
+    const point3 p{1.5f, -2.25f, 3.0f};
+    // n.dir exactly 0 (dir in the surface's plane), and the smallest negative and positive n.dir.
+    const vec3 n{0, 1, 0};
+    for (const vec3& dir : {vec3(1, 0, 0), vec3(0.6f, 0.0f, -0.8f), vec3(1.0f, -1e-30f, 0.0f), vec3(1.0f, 1e-30f, 0.0f)}) {
+        INFO("n.dir = " << glm::dot(n, dir) << (glm::dot(n, dir) < 0.0f ? ": n is turned to -n" : ": n stays as it is"));
+        check_exact(p, n, dir);
+    }
+}
