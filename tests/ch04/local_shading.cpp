@@ -120,3 +120,21 @@ STABILITY_TEST("local_shading: never a NaN, with the light straight opposite the
         check(plastic, up, tilted(-89.999), tilted(89.999), color(1.0f));
     }
 }
+
+GRADED_TEST("local_shading: n.l exactly 0 gives black; a light the least bit above the surface (n.l = 1e-30, or the least float) keeps its highlight", "04.1", 1)
+{
+    // The contract's test is n.l <= 0, nothing else: a threshold such as n.l > 1e-4 drops the
+    // highlight of a grazing light, which is bright when the eye looks along its mirror direction.
+    const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.8f), 2.0f};
+    const vec3 v = tilted(-10.0);
+    for (const float above : {0.0f, -0.0f, 1e-30f, std::numeric_limits<float>::denorm_min(), -1e-30f}) {
+        const vec3 l{1.0f, above, 0.0f};  // unit: 1 + 1e-60 is 1 in float
+        const color got = local_shading(plastic, up, v, l, color(1.0f));
+        const color want = reference(plastic, up, v, l, color(1.0f));
+        INFO(query(plastic, up, v, l, color(1.0f)) << ": n.l = " << glm::dot(up, l) << ", got " << show(got) << ", expected "
+             << show(want) << (glm::dot(up, l) > 0.0f ? " (the light is above the surface: its highlight counts)"
+                                                      : " (black: the light is not above the surface)"));
+        CHECK(same_colour(got, want));
+        CHECK((glm::dot(up, l) > 0.0f) == (got.x > 0.0f));
+    }
+}
