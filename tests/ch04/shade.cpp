@@ -151,3 +151,41 @@ STABILITY_TEST("shade: never a NaN, with a light exactly at the shaded point or 
     REQUIRE((std::isfinite(got.x) && std::isfinite(got.y) && std::isfinite(got.z)));
     CHECK(same_colour(got, want));
 }
+
+GRADED_TEST("shade: a light exactly in the surface's plane gets no feeler and adds nothing; a hair above it gets one", "04.4", 1)
+{
+    // The floor's hit point has y = 0 exactly (its corners do), so a light at y = 0 has n.l = 0:
+    // it cannot light the point, and a feeler toward it is a wasted ray. At y = 1e-20 it can.
+    for (const auto& [height, feelers] : {std::pair<float, std::uint64_t>{0.0f, 0}, {-1e-20f, 0}, {1e-20f, 1}}) {
+        LitScene scene = floor_scene({PointLight{{4, height, -3}, color(5.0f)}});
+        const auto [ray, hit] = look_at(scene, {0, 2, 5}, {0.5f, 0, 0.3f});
+        REQUIRE(hit.p.y == 0.0f);
+        reset_counters();
+        const color got = shade(scene, ray, hit, given_feelers);
+        const std::uint64_t sent = shadow_rays();
+        const color want = plastic.diffuse * scene.ambient + (feelers ? lit_by(ray, hit, {0, 1, 0}, scene.lights[0]) : color(0.0f));
+        INFO(describe(scene, ray, hit) << ": n.l = " << glm::dot(vec3(0, 1, 0), glm::normalize(scene.lights[0].position - hit.p))
+             << "; got " << show(got) << " after " << sent << " shadow feelers, expected " << show(want) << " after "
+             << feelers << (feelers ? " (the light is above the floor)" : " (the light is not above the floor)"));
+        CHECK(same_colour(got, want));
+        CHECK(sent == feelers);
+    }
+}
+
+GRADED_TEST("shade: passes its feeler settings to light_blocked as they are: with feelers off, a light behind an occluder lights the point", "04.4", 1)
+{
+    // ShadowQuery::off makes light_blocked answer "not blocked" and count no feeler; default
+    // settings in its place would find the sphere and leave the point in shadow.
+    const PointLight light{{0, 6, 0}, color(30.0f)};
+    const LitScene scene = floor_scene({light}, {{{0, 3, 0}, 1}});
+    const auto [ray, hit] = look_at(scene, {0, 2, 8}, {0.1f, 0, 0.2f});  // in the sphere's shadow
+    const FeelerSettings off{Offset::robust, ShadowQuery::off};
+    reset_counters();
+    const color got = shade(scene, ray, hit, off);
+    const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, light);
+    INFO(describe(scene, ray, hit) << ", feeler settings with query off (no shadows): got " << show(got) << " after "
+         << shadow_rays() << " counted feelers, expected " << show(want)
+         << " after 0: the settings go to light_blocked unchanged, and it answers not blocked");
+    CHECK(same_colour(got, want));
+    CHECK(shadow_rays() == 0);
+}
