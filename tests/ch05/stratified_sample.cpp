@@ -1,7 +1,11 @@
 // EXERCISE 05.3: stratified (jittered) samples: one uniform point in each cell of an n x n grid.
 #include "tests/ch05/describe.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
 #include <vector>
 
 using namespace rt;
@@ -15,6 +19,22 @@ int cell_of(float x, int n)
     if (!(x >= 0.0f && x < 1.0f))
         return -1;
     return std::min(n - 1, static_cast<int>(static_cast<double>(x) * n));
+}
+
+std::uint32_t bits_of(float x)
+{
+    std::uint32_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+// A float and its bit pattern, for the clamp's failures.
+std::string show_bits(float x)
+{
+    std::ostringstream s;
+    s.precision(9);
+    s << x << " (bits 0x" << std::hex << bits_of(x) << ')';
+    return s.str();
 }
 
 }  // namespace
@@ -144,4 +164,43 @@ STABILITY_TEST("stratified_sample: never 1, even in the last cell of a 256 x 256
             REQUIRE(u.x >= static_cast<float>(n - 1) / static_cast<float>(n));
         }
     }
+}
+
+GRADED_TEST("stratified_sample: a coordinate that rounds to 1 comes back as exactly one_minus_epsilon, one that rounds just below 1 is kept; two numbers a call", "05.3", 1)
+{
+    // In the last cell of a 4096 x 4096 grid, (4095 + xi) / 4096 rounds to 1 when xi is within
+    // 2^-13 of 1, and to one_minus_epsilon (1 - 2^-24) a step below that. The contract clamps to
+    // at most one_minus_epsilon, the largest float below 1: the first must come back as exactly
+    // that, the second unchanged (not 1 - FLT_EPSILON = 1 - 2^-23, two steps below 1). With n a
+    // power of two every way of writing the formula rounds to the same float, so each call is
+    // compared bit for bit, its numbers taken from a copy of the stream, two a call.
+    constexpr int n = 4096, last = n * n - 1;
+    const auto formula = [](float xi) {
+        return std::min((static_cast<float>(n - 1) + xi) / static_cast<float>(n), one_minus_epsilon);
+    };
+    Rng rng(62, 0), copy(62, 0);
+    int rounds_to_one[2] = {0, 0}, just_below[2] = {0, 0};
+    int call = 0;
+    for (; call < 1000000 && !(rounds_to_one[0] && rounds_to_one[1] && just_below[0] && just_below[1]); ++call) {
+        const float xi[2] = {copy.next_float(), copy.next_float()};
+        const sample2 u = stratified_sample(last, n, rng);
+        const float got[2] = {u.x, u.y};
+        for (int c = 0; c < 2; ++c) {
+            const float unclamped = (static_cast<float>(n - 1) + xi[c]) / static_cast<float>(n);
+            rounds_to_one[c] += unclamped == 1.0f;
+            just_below[c] += unclamped == one_minus_epsilon;
+            INFO("call " << call << ": stratified_sample(k = " << last << ", n = " << n << ") gave " << show(u)
+                 << "; its " << (c == 0 ? "x" : "y") << " number (the stream's " << (c == 0 ? "first" : "second")
+                 << " of the call) is xi = " << xi[c] << ", so (4095 + xi) / 4096 = " << show_bits(unclamped)
+                 << (unclamped == 1.0f ? ", which is 1 and clamps to one_minus_epsilon" : "") << "; expected "
+                 << show_bits(formula(xi[c])) << ", got " << show_bits(got[c]));
+            REQUIRE(bits_of(got[c]) == bits_of(formula(xi[c])));
+        }
+    }
+    INFO("after " << call << " calls the stream and a copy that drew two numbers a call disagree: stratified_sample "
+         "must draw exactly two numbers from rng per call");
+    CHECK(rng.next_u32() == copy.next_u32());
+    INFO("the seeded stream's " << call << " calls held x rounding to 1 " << rounds_to_one[0] << " times, y "
+         << rounds_to_one[1] << ", x just below 1 " << just_below[0] << ", y " << just_below[1]);
+    REQUIRE((rounds_to_one[0] && rounds_to_one[1] && just_below[0] && just_below[1]));
 }
