@@ -1,9 +1,13 @@
 // EXERCISE 05.4: the light of one area light, estimated with N shadow feelers, each sample
 // weighted by L_e cos(theta_light) / d^2 * A / N; compared with the exact answer (Lambert's
 // polygon formula, exact_irradiance.hpp) within the tolerance the estimates' own spread allows.
+#include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "tests/ch05/estimate.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <tuple>
 
 using namespace rt;
 using namespace rt::grader;
@@ -204,4 +208,133 @@ STABILITY_TEST("direct_light: a light of no size at the shaded point itself give
     const dvec3 want = exact_light(real, dvec3(v.hit.p), {0, 1, 0});
     INFO(describe(v, real, stratified16, lit, want, "a square light 2 above the point"));
     CHECK(agrees(lit, want));
+}
+
+namespace {
+
+// The floor seen at `target`, its hit point set to exactly `target` (a point of the floor y = 0,
+// which the floor's own rounding would move by a float step): the boundary cases below need the
+// point's coordinates exact.
+FloorView exact_floor_view(const point3& target_point)
+{
+    FloorView v = floor_view(target_point);
+    v.hit.p = target_point;
+    return v;
+}
+
+// Rng(826214, 7), the stream estimate() gives direct_light with this seed, draws 0.557104766 and
+// then exactly 0.5 (found by search): one random sample u = (0.557..., 1/2), which a rectangle maps
+// to centre + 0.114 axis_u + 0 axis_v, exactly on the line through its centre along axis_u.
+constexpr std::uint64_t seed_half = 826214;
+
+}  // namespace
+
+GRADED_TEST("direct_light: a sample exactly in the surface's plane (n.l = 0) or in the light's own plane (cos_light = 0) sends no feeler; a hair off it does", "05.4", 1)
+{
+    const point3 p{0.25f, 0.0f, 0.0f};
+    const FloorView v = exact_floor_view(p);
+    {
+        Rng check_rng(seed_half, 7);
+        const float x = check_rng.next_float(), y = check_rng.next_float();
+        INFO("the seeded stream's first two numbers are " << x << " and " << y << "; the case needs the second to be 0.5");
+        REQUIRE(y == 0.5f);
+    }
+    // A light standing upright 2 beyond the point, facing it (-x); its one sample lies on the line
+    // through its centre along axis_u (z), at the centre's height h: the sample's n.l is h / d.
+    const LightSampling one{1, SampleScheme::random};
+    for (const auto& [h, feelers, why] :
+         {std::tuple<float, std::uint64_t, const char*>{0.0f, 0, "the sample lies exactly in the floor's plane: n.l = 0, skip it before its feeler"},
+          {-1e-20f, 0, "the sample lies 1e-20 below the floor's plane: n.l < 0, skip it"},
+          {1e-20f, 1, "the sample lies 1e-20 above the floor's plane: n.l > 0, one feeler"}}) {
+        const AreaLight upright = rectangle_light(point3(2.25f, h, 0.0f), {0, 0, 0.5f}, {0, 0.5f, 0}, warm);
+        const Estimate e = estimate(v, upright, one, 1, seed_half);
+        INFO("direct_light at " << show(v.hit.p) << " (floor normal (0, 1, 0)) from " << show(upright) << ", "
+             << show(one) << ", the sample u = (0.557104766, 0.5), so the point on the light is at height " << h
+             << ": it sent " << e.feelers << " shadow feelers, expected " << feelers << ": " << why);
+        CHECK(e.feelers == feelers);
+        CHECK((std::isfinite(e.mean.x) && std::isfinite(e.mean.y) && std::isfinite(e.mean.z)));
+    }
+    // A light glowing toward +z in the plane z = z0, above the floor beside the point: every sample
+    // has l.z = z0 / d, so cos_light = -z0 / d: 0 in the plane through the point.
+    for (const auto& [z0, feelers, why] :
+         {std::tuple<float, std::uint64_t, const char*>{0.0f, 0, "the point lies in the light's plane: cos_light = 0 for every sample, skip each before its feeler"},
+          {1e-20f, 0, "the point lies 1e-20 behind the light's plane: cos_light < 0, skip each"},
+          {-1e-20f, 16, "the point lies 1e-20 in front of the light's plane: cos_light > 0, one feeler a sample"}}) {
+        const AreaLight edge_on = rectangle_light(point3(1.25f, 1.0f, z0), {0.5f, 0, 0}, {0, 0.5f, 0}, warm);
+        const Estimate e = estimate(v, edge_on, stratified16, 1, 74);
+        INFO("direct_light at " << show(v.hit.p) << " from " << show(edge_on) << " (glowing toward +z), "
+             << show(stratified16) << ": it sent " << e.feelers << " shadow feelers, expected " << feelers << ": " << why);
+        CHECK(e.feelers == feelers);
+        CHECK((std::isfinite(e.mean.x) && std::isfinite(e.mean.y) && std::isfinite(e.mean.z)));
+    }
+}
+
+GRADED_TEST("direct_light: one call's value is the sum over its samples of local_shading(m, n, v, l, L_e cos_light / d^2 * A / N), sample by sample", "05.4", 2)
+{
+    // A single estimate's geometry is exact, not noisy: with the stream's numbers known, each
+    // sample's point, its two cosines, its distance and its weight A / N follow, and the call must
+    // return their sum. The floor is shiny here, so the highlight checks v = -ray.dir too.
+    const point3 p{0.25f, 0.0f, 0.0f};
+    FloorView v = exact_floor_view(p);
+    const PhongMaterial shiny{{0.6f, 0.5f, 0.4f}, color(0.5f), 4.0f};
+    for (PhongMaterial& m : v.scene.lit.materials)
+        m = shiny;
+    const vec3 n{0, 1, 0}, to_eye = -v.ray.dir;
+    const AreaLight slanted = rectangle_facing(p + vec3(1.4f, 1.3f, -0.6f), glm::normalize(vec3(-1.0f, -0.6f, 0.9f)), 0.5f, 0.3f, warm);
+    for (const int samples : {1, 3, 8}) {
+        const LightSampling sampling{samples, SampleScheme::random};
+        for (std::uint64_t seed = 80; seed < 85; ++seed) {
+            Rng rng(seed, 7), copy(seed, 7);
+            const color got = direct_light(v.scene, v.ray, v.hit, slanted, sampling, rng);
+            const dvec3 pd(p), c(slanted.centre), a(slanted.axis_u), b(slanted.axis_v);
+            const dvec3 light_n = glm::normalize(glm::cross(a, b));
+            const double area = 4.0 * glm::length(glm::cross(a, b));
+            dvec3 want(0.0);
+            std::ostringstream samples_said;
+            for (int k = 0; k < samples; ++k) {
+                const double ux = copy.next_float(), uy = copy.next_float();
+                const dvec3 y = c + (2.0 * ux - 1.0) * a + (2.0 * uy - 1.0) * b;
+                const double d = glm::length(y - pd);
+                const dvec3 l = (y - pd) / d;
+                const double cos_light = -glm::dot(light_n, l), cos_surface = glm::dot(dvec3(n), l);
+                samples_said << "\n  sample " << k << ": u = (" << ux << ", " << uy << "), d = " << d
+                             << ", n.l = " << cos_surface << ", cos_light = " << cos_light;
+                if (cos_surface > 0 && cos_light > 0)
+                    want += dvec3(local_shading(shiny, n, to_eye, vec3(l), color(dvec3(warm) * (cos_light / (d * d) * area / samples))));
+            }
+            INFO("direct_light at " << show(p) << " (a shiny floor, k_d = (0.6, 0.5, 0.4), k_s = 0.5, p = 4, normal (0, 1, 0), toward the eye "
+                 << show(to_eye) << ") from " << show(slanted) << " (area " << area << "), " << show(sampling)
+                 << ", stream (" << seed << ", 7): got " << show(got) << ", expected " << show(color(want))
+                 << " = the sum of local_shading(m, n, v, l, L_e cos_light / d^2 * A / N) over" << samples_said.str());
+            CHECK(rel_error(got.x, want.x) <= 1e-5);
+            CHECK(rel_error(got.y, want.y) <= 1e-5);
+            CHECK(rel_error(got.z, want.z) <= 1e-5);
+        }
+    }
+}
+
+GRADED_TEST("direct_light: a floor seen from below is lit by a light below it, its normal turned to the eye, and not by one above", "05.4", 2)
+{
+    // The eye under the floor (whose triangles face up): n must be turned to face the eye, as
+    // chapter 04's shade turns it, so the light below lights the underside and the one above,
+    // behind the surface the eye sees, lights nothing and costs no feeler.
+    FloorView v = floor_view(target);
+    const point3 eye = target + vec3(0.0f, -0.5f, 4.0f);
+    v.ray = Ray{eye, glm::normalize(target - eye)};
+    const std::optional<Hit> hit = closest_hit(v.ray, v.scene.lit, Interval{0.0f, infinity});
+    REQUIRE(hit);
+    REQUIRE(hit->n.y > 0.0f);  // the floor's own normal points up, away from the eye
+    v.hit = *hit;
+    const dvec3 p(v.hit.p), under(0, -1, 0);
+    const AreaLight below = disc_light(target + vec3(0.3f, -2.0f, 0.1f), {0, 1, 0}, 0.5f, warm);
+    for (const LightSampling& sampling : {random16, stratified16})
+        check(v, below, sampling, 1000, 75, exact_light(below, p, under),
+              "the eye and the light are both under the floor: with n turned to the eye, (0, -1, 0), the light "
+              "falls on the side the eye sees");
+    const AreaLight above = disc_light(target + vec3(0.3f, 2.0f, 0.1f), down, 0.5f, warm);
+    const Estimate e = estimate(v, above, stratified16, 10, 76);
+    INFO(describe(v, above, stratified16, e, dvec3(0.0), "the light is above the floor, the eye below it")
+         << "; it sent " << e.feelers << " shadow feelers, expected none");
+    CHECK(e.mean == dvec3(0.0));
+    CHECK(e.feelers == 0);
 }
