@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 using namespace rt;
@@ -119,7 +120,7 @@ GRADED_TEST("the rays of one pixel all cross at one point of the plane of focus,
     }
 }
 
-GRADED_TEST("at depth d the rays of one pixel spread over the circle of confusion, radius R |d - F| / F around the pinhole ray", "06.3", 2)
+GRADED_TEST("at depth d the rays of one pixel spread over the circle of confusion, radius R abs(d - F) / F around the pinhole ray", "06.3", 2)
 {
     // By similar triangles: a ray from lens point L (|L| <= R) through the focal point P at depth F
     // is at depth d at P d / F + L (1 - d / F), so the pixel's rays cover a disc of radius
@@ -220,6 +221,41 @@ STABILITY_TEST("tiny scenes and cameras far from the origin keep every ray unit,
             REQUIRE((finite(ray.origin) && finite(ray.dir)));
             REQUIRE(std::abs(glm::length(ray.dir) - 1.0f) <= 1e-6f);
             REQUIRE(glm::length(got - want) <= tolerance);
+        }
+    }
+}
+
+GRADED_TEST("an aperture of -0 is the pinhole too; one the least bit above 0 is a lens: two numbers drawn, the ray from its lens point through the focal point", "06.3", 1)
+{
+    // "aperture_radius = 0" is the test: -0 compares equal to 0, and a radius of 1e-30 (or the
+    // least float) is not 0, however small the lens. A threshold (R < 1e-6 taken as a pinhole)
+    // draws nothing where the contract draws two numbers, and shifts every later pixel's samples.
+    Rng cases(6, 9);
+    for (int k = 0; k < 20; ++k) {
+        LensCase c = random_lens_case(cases);
+        for (const float radius : {-0.0f, 1e-30f, std::numeric_limits<float>::denorm_min()}) {
+            c.lens.aperture_radius = radius;
+            Rng rng(9, static_cast<std::uint64_t>(k));
+            const Rng before = rng;
+            const Ray got = thin_lens_ray(c.cam, c.lens, c.x, c.y, rng);
+            const Ray pinhole = primary_ray(c.cam, c.x, c.y);
+            const bool lens = radius != 0.0f;
+            const point3 focus = focal_point(c.cam, c.lens, pinhole);
+            const vec3 want_dir = lens ? glm::normalize(focus - c.cam.eye) : pinhole.dir;
+            INFO(show(c) << ": got " << show(got) << " after drawing "
+                 << (drew(before, rng, 0) ? "0" : drew(before, rng, 2) ? "2" : "neither 0 nor 2") << " numbers; expected "
+                 << (lens ? "a lens (R is not 0): two numbers drawn, the ray from the eye (R d is below float's reach) "
+                            "toward the focal point " + show(focus) + ", along " + show(want_dir)
+                          : "the pinhole (R = -0 equals 0): primary_ray's " + show(pinhole) + " bit for bit, nothing drawn"));
+            if (lens) {
+                REQUIRE(drew(before, rng, 2));
+                REQUIRE(glm::length(got.origin - c.cam.eye) <= 1e-6f * glm::length(c.cam.eye));
+                REQUIRE(glm::length(got.dir - want_dir) <= 1e-5f);
+            } else {
+                REQUIRE(drew(before, rng, 0));
+                REQUIRE(same_bits(got.origin, pinhole.origin));
+                REQUIRE(same_bits(got.dir, pinhole.dir));
+            }
         }
     }
 }
