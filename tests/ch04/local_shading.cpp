@@ -131,7 +131,7 @@ GRADED_TEST("local_shading: n.l exactly 0 gives black; a light the least bit abo
         const vec3 l{1.0f, above, 0.0f};  // unit: 1 + 1e-60 is 1 in float
         const color got = local_shading(plastic, up, v, l, color(1.0f));
         const color want = reference(plastic, up, v, l, color(1.0f));
-        INFO(query(plastic, up, v, l, color(1.0f)) << ": n.l = " << glm::dot(up, l) << ", got " << show(got) << ", expected "
+        INFO("local_shading with " << query(plastic, up, v, l, color(1.0f)) << ": n.l = " << glm::dot(up, l) << ", got " << show(got) << ", expected "
              << show(want) << (glm::dot(up, l) > 0.0f ? " (the light is above the surface: its highlight counts)"
                                                       : " (black: the light is not above the surface)"));
         CHECK(same_colour(got, want));

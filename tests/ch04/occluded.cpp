@@ -24,7 +24,7 @@ struct Case {
 void check(const Case& c)
 {
     const bool got = occluded(c.scene, c.origin, c.light, c.t_min);
-    INFO("the feeler from " << show(c.origin) << " to the light at " << show(c.light) << " with t_min = " << c.t_min
+    INFO("occluded: the feeler from " << show(c.origin) << " to the light at " << show(c.light) << " with t_min = " << c.t_min
          << " in " << show(c.scene) << ": got " << show(got) << ", expected " << show(c.blocked) << ": " << c.why);
     CHECK(got == c.blocked);
 }

@@ -164,7 +164,7 @@ GRADED_TEST("shade: a light exactly in the surface's plane gets no feeler and ad
         const color got = shade(scene, ray, hit, given_feelers);
         const std::uint64_t sent = shadow_rays();
         const color want = plastic.diffuse * scene.ambient + (feelers ? lit_by(ray, hit, {0, 1, 0}, scene.lights[0]) : color(0.0f));
-        INFO(describe(scene, ray, hit) << ": n.l = " << glm::dot(vec3(0, 1, 0), glm::normalize(scene.lights[0].position - hit.p))
+        INFO("shade: " << describe(scene, ray, hit) << ": n.l = " << glm::dot(vec3(0, 1, 0), glm::normalize(scene.lights[0].position - hit.p))
              << "; got " << show(got) << " after " << sent << " shadow feelers, expected " << show(want) << " after "
              << feelers << (feelers ? " (the light is above the floor)" : " (the light is not above the floor)"));
         CHECK(same_colour(got, want));
@@ -183,7 +183,7 @@ GRADED_TEST("shade: passes its feeler settings to light_blocked as they are: wit
     reset_counters();
     const color got = shade(scene, ray, hit, off);
     const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, {0, 1, 0}, light);
-    INFO(describe(scene, ray, hit) << ", feeler settings with query off (no shadows): got " << show(got) << " after "
+    INFO("shade: " << describe(scene, ray, hit) << ", feeler settings with query off (no shadows): got " << show(got) << " after "
          << shadow_rays() << " counted feelers, expected " << show(want)
          << " after 0: the settings go to light_blocked unchanged, and it answers not blocked");
     CHECK(same_colour(got, want));

@@ -242,7 +242,7 @@ GRADED_TEST("an aperture of -0 is the pinhole too; one the least bit above 0 is 
             const bool lens = radius != 0.0f;
             const point3 focus = focal_point(c.cam, c.lens, pinhole);
             const vec3 want_dir = lens ? glm::normalize(focus - c.cam.eye) : pinhole.dir;
-            INFO(show(c) << ": got " << show(got) << " after drawing "
+            INFO("thin_lens_ray with " << show(c) << ": got " << show(got) << " after drawing "
                  << (drew(before, rng, 0) ? "0" : drew(before, rng, 2) ? "2" : "neither 0 nor 2") << " numbers; expected "
                  << (lens ? "a lens (R is not 0): two numbers drawn, the ray from the eye (R d is below float's reach) "
                             "toward the focal point " + show(focus) + ", along " + show(want_dir)
