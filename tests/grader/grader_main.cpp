@@ -12,6 +12,9 @@
 //                         machine's load), so an endless loop or a crash in one case costs that case only
 //   --case-process S      (what the grader gives each case's process) run the one case named, append
 //                         its result to --results, and stop after S seconds of CPU time
+//   --expect-loss-in NN.k with --expect-score less: the points must be lost in exercise NN.k's own
+//                         cases (a kept mutant of NN.k), not only in the chapter's agreement or picture
+//   --check-clauses FILE  check the chapter's clause table against the grader's cases (clauses.hpp)
 //
 // Catch2 v2 and v3 differ in the few interfaces a runner with a listener uses; RT_CATCH2_V3 picks.
 #ifdef RT_CATCH2_V3
@@ -23,6 +26,7 @@
 #endif
 
 #include "tests/grader/child_process.hpp"
+#include "tests/grader/clauses.hpp"
 #include "tests/grader/freshness.hpp"
 #include "tests/grader/graded.hpp"
 #include "tests/grader/picture.hpp"
@@ -274,7 +278,7 @@ int main(int argc, char* argv[])
         return *regraded;
     Catch::Session session;
     Catch::StringMaker<float>::precision = 9;  // so a tolerance like 2e-6 does not print as 0.0
-    std::string expect, list_path;
+    std::string expect, list_path, loss_in, clause_table;
     int case_timeout = 0;
     double cpu_limit = 0.0;
     using clara::Opt;
@@ -284,7 +288,9 @@ int main(int argc, char* argv[])
                 Opt(artifacts_dir, "dir")["--artifacts"]("where failing picture tests write their images") |
                 Opt(case_timeout, "seconds")["--case-timeout"]("with --results: each case in its own process, stopped after this much CPU time") |
                 Opt(cpu_limit, "seconds")["--case-process"]("(the grader's own) one case's process, stopped after this much CPU time") |
-                Opt(list_path, "file")["--list-cases"]("write every graded case at 0 points to this file, and run none"));
+                Opt(list_path, "file")["--list-cases"]("write every graded case at 0 points to this file, and run none") |
+                Opt(loss_in, "NN.k")["--expect-loss-in"]("with --expect-score less: the points are lost in this exercise's own cases") |
+                Opt(clause_table, "file")["--check-clauses"]("check the chapter's clause table against its cases, and run none"));
     if (const int rc = session.applyCommandLine(argc, argv); rc != 0)
         return rc;
     if (cpu_limit > 0.0) {
@@ -293,6 +299,15 @@ int main(int argc, char* argv[])
         limit_cpu_time(cpu_limit, exit_cpu_limit);
         session.run();
         return 0;
+    }
+    if (!clause_table.empty()) {
+        std::vector<GradedCase> cases;
+        for (const CaseResult& c : planned_cases(session))
+            cases.push_back({c.number, c.name});
+        const std::vector<std::string> problems = check_clause_table(clause_table, cases);
+        for (const std::string& p : problems)
+            std::cerr << p << '\n';
+        return problems.empty() ? 0 : 1;
     }
     if (!list_path.empty()) {
         // The cases of a chapter whose exercise file did not compile: each at 0 of its points.
@@ -323,5 +338,15 @@ int main(int argc, char* argv[])
     print_points_table(std::cout, summarize(results));
     if (expect.empty())
         return failed;
-    return check_expectation(std::cout, results, expect) ? 0 : 1;
+    if (!check_expectation(std::cout, results, expect))
+        return 1;
+    if (!loss_in.empty()) {
+        const bool lost = std::any_of(results.begin(), results.end(),
+                                      [&](const CaseResult& r) { return r.number == loss_in && r.score < r.max_score; });
+        if (!lost) {
+            std::cout << "expected a loss in " << loss_in << "'s own cases; its cases all passed\n";
+            return 1;
+        }
+    }
+    return 0;
 }
