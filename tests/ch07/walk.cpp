@@ -351,7 +351,7 @@ GRADED_TEST("next_cell: the walk steps when the next boundary is one ulp below t
     check_step(ends_after, true, stepped, "the next boundary (t = 2) is one ulp below t_end: the ray enters p = 4 at t = 2");
 }
 
-GRADED_TEST("next_cell: a walk whose t_end or t_max is NaN stops at once, unchanged (NaN is not below t_end); with numbers the same walk steps", "07.5", 3)
+STABILITY_TEST("next_cell: a walk whose t_end or t_max is NaN stops at once, unchanged (NaN is not below t_end); with numbers the same walk steps", "07.5", 3)
 {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const GridWalk nan_end = along_x(nan);
