@@ -85,7 +85,7 @@ GRADED_TEST("the grid: a near object that only occupies a later cell beats a far
     const UniformGrid grid(grid_of({{0}, {1}, {0}}));
     ObjectHit hit;
     const bool found = grid.closest(ray, all, o, hit);
-    INFO("the grid's closest hit along " << show(ray) << " with the far sphere 0 (t = 3.3) listed in cells 0 and 2 and "
+    INFO("07.6 the grid's closest hit along " << show(ray) << " with the far sphere 0 (t = 3.3) listed in cells 0 and 2 and "
          "the near sphere 1 (t = 2.3) in cell 1: got " << (found ? show(hit) : "no hit") << ", expected object 1: the hit "
          "of sphere 0 found in cell 0 lies beyond it, and must not end the walk");
     CHECK(found);

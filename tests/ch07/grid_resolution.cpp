@@ -61,7 +61,7 @@ GRADED_TEST("grid_resolution: at least 1 and at most max_cells_per_axis cells pe
     check(Bounds{}, 5, 1.0f, {1, 1, 1}, "an empty box (Bounds{}, nothing inside) though 5 objects are counted: one cell");
     check(box({0, 0, 0}, {1, 1, 1}), -3, 1.0f, {1, 1, 1}, "a negative count: one cell");
     const cell3 wide = grid_resolution(box({0, 0, 0}, {1, 1, 1}), 100000000, 1000.0f, 2048);
-    INFO("grid_resolution with max_per_axis = 2048 (the hashed grid's limit), 1e11 cells asked: got " << show(wide));
+    INFO("07.1 grid_resolution with max_per_axis = 2048 (the hashed grid's limit), 1e11 cells asked: got " << show(wide));
     CHECK(wide == cell3(2048, 2048, 2048));
 }
 

@@ -57,7 +57,7 @@ void check_start(const Ray& ray, Interval range, const Expected& e, const char* 
 void check_missed(const Ray& ray, Interval range, const char* why)
 {
     const GridWalk w = start_walk(cube_cells, ray, range);
-    INFO("start_walk(" << show(cube_cells) << ", " << show(ray) << ", t in (" << range.min << ", " << range.max
+    INFO("07.4 start_walk(" << show(cube_cells) << ", " << show(ray) << ", t in (" << range.min << ", " << range.max
          << ")): got " << show(w) << ", expected a missed walk: " << why);
     CHECK(w.missed);
 }
@@ -71,7 +71,7 @@ void check_walk(const GridShape& g, const Ray& ray, Interval range, const char* 
     bool outside = false;
     const std::vector<int> walked = addresses(cells_walked(g, ray, range, outside));
     const std::vector<int> crossed = addresses(cells_crossed(g, ray, range));
-    INFO(show(ray) << ", t in (" << range.min << ", " << range.max << "), through " << show(g)
+    INFO("07.5 the walk along the " << show(ray) << ", t in (" << range.min << ", " << range.max << "), through " << show(g)
          << ": the walk visits " << show(walked) << (outside ? " and then steps outside the grid" : "")
          << "; the segment crosses " << show(crossed) << ": " << why);
     CHECK(!outside);
@@ -182,7 +182,7 @@ GRADED_TEST("next_cell: steps along the axis whose boundary comes first, and sto
     w.t_delta[1] = 1;
     w.t_end = 1.75f;
     w.t_range = infinity;
-    INFO("from " << show(w));
+    INFO("07.5 next_cell from " << show(w));
     REQUIRE(next_cell(w));
     INFO("after the first step: " << show(w) << "; expected y crossed at t = 0.75 into p = 3, t_max[1] = 1.75");
     CHECK(w.p == 3);
@@ -255,7 +255,7 @@ STABILITY_TEST("next_cell: after 10^4 and 10^5 steps the walk is in the right ce
             // The oracle: the boundary at box.min + step * size, reached at t = that - 0.05.
             const double t_exact = static_cast<double>(step) * size - 0.05;
             const double drift = std::abs(static_cast<double>(w.t_enter) - t_exact) / size;
-            INFO("after " << step << " steps: " << show(w) << "; expected p = " << step << " and t_enter = "
+            INFO("07.5 after " << step << " steps: " << show(w) << "; expected p = " << step << " and t_enter = "
                  << t_exact << ": off by " << drift << " cells");
             CHECK(w.p == step);
             CHECK(drift < 1e-3 * (step / 10000));

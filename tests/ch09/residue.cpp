@@ -166,7 +166,7 @@ GRADED_TEST("the walk's residue stays p mod M over long seeded walks (M prime, a
             }
         }
     }
-    INFO(steps << " steps of walks through a 300 x 200 x 100 grid: " << wrong << " residues wrong; the first: " << first);
+    INFO("09.2 " << steps << " steps of walks through a 300 x 200 x 100 grid: " << wrong << " residues wrong; the first: " << first);
     CHECK(steps > 10000);
     CHECK(wrong == 0);
 }

@@ -76,11 +76,11 @@ GRADED_TEST("the hashed grid's table keeps colliding cells apart: a table of 1 t
                 hits += fb;
                 wrong += fa != fb || (fa && (a.object != b.object || a.t != b.t));
             }
-        INFO("table size " << M << ": " << tight.stats().collisions << " collisions among " << tight.stats().occupied
+        INFO("09.4 table size " << M << ": " << tight.stats().collisions << " collisions among " << tight.stats().occupied
              << " occupied cells");
         CHECK(tight.stats().collisions > 0);
     }
-    INFO(wrong << " of " << rays << " rays answered differently with a table of 1 to 7 buckets than with 2^20; "
+    INFO("09.4 " << wrong << " of " << rays << " rays answered differently with a table of 1 to 7 buckets than with 2^20; "
          << hits << " of them hit a sphere");
     CHECK(wrong == 0);
     CHECK(hits >= rays / 20);
