@@ -12,7 +12,7 @@ const GridShape grid = grid_shape({{-1, 0, 2}, {1, 2, 3}}, {4, 2, 5});
 void check_cell(const point3& p, const cell3& expected, const char* why)
 {
     const cell3 got = cell_of(grid, p);
-    INFO("cell_of(" << show(grid) << ", " << show(p) << "): got " << show(got) << ", expected " << show(expected) << ": "
+    INFO("07.2 cell_of(" << show(grid) << ", " << show(p) << "): got " << show(got) << ", expected " << show(expected) << ": "
          << why);
     CHECK(got == expected);
 }
@@ -20,7 +20,7 @@ void check_cell(const point3& p, const cell3& expected, const char* why)
 void check_range(const Bounds& b, const cell3& first, const cell3& last, const char* why)
 {
     const CellRange got = cells_overlapping(grid, b);
-    INFO("cells_overlapping(" << show(grid) << ", " << show(b) << "): got " << show(got.first) << " to "
+    INFO("07.3 cells_overlapping(" << show(grid) << ", " << show(b) << "): got " << show(got.first) << " to "
          << show(got.last) << ", expected " << show(first) << " to " << show(last) << ": " << why);
     CHECK(got.first == first);
     CHECK(got.last == last);
@@ -62,4 +62,25 @@ GRADED_TEST("cells_overlapping: a box that ends exactly on a boundary is listed 
     check_range({{-0.9f, 0.2f, 2.2f}, {-0.5f, 1.0f, 2.4f}}, {0, 0, 1}, {1, 1, 2},
                 "it ends on x = -0.5, y = 1 and z = 2.4: the cells beyond those boundaries too");
     check_range({{0.0f, 0.5f, 2.5f}, {0.0f, 0.5f, 2.5f}}, {2, 0, 2}, {2, 0, 2}, "a point box in one cell");
+}
+
+GRADED_TEST("cell_of: one ulp below a boundary is the cell below it, one ulp above the cell above; one ulp either side of the far face, the last cell", "07.2", 3)
+{
+    const float below_x = std::nextafter(-0.5f, -1.0f), above_x = std::nextafter(-0.5f, 0.0f);
+    check_cell({below_x, 0.5f, 2.5f}, {0, 0, 2}, "x one ulp below the boundary x = -0.5: cell 0 along x");
+    check_cell({above_x, 0.5f, 2.5f}, {1, 0, 2}, "x one ulp above the boundary x = -0.5: cell 1 along x");
+    check_cell({0.0f, std::nextafter(1.0f, 0.0f), 2.5f}, {2, 0, 2}, "y one ulp below the boundary y = 1: cell 0 along y");
+    check_cell({0.0f, std::nextafter(1.0f, 2.0f), 2.5f}, {2, 1, 2}, "y one ulp above the boundary y = 1: cell 1 along y");
+    check_cell({std::nextafter(1.0f, 0.0f), std::nextafter(2.0f, 0.0f), 2.5f}, {3, 1, 2},
+               "one ulp inside the far faces x = 1 and y = 2: the last cells");
+    check_cell({std::nextafter(1.0f, 2.0f), std::nextafter(2.0f, 3.0f), 2.5f}, {3, 1, 2},
+               "one ulp outside the far faces x = 1 and y = 2: still the last cells");
+}
+
+GRADED_TEST("cells_overlapping: a box ending one ulp before a boundary stays below it; one ulp past it, the cell beyond is listed too", "07.3", 3)
+{
+    check_range({{-0.9f, 0.2f, 2.5f}, {std::nextafter(-0.5f, -1.0f), std::nextafter(1.0f, 0.0f), 2.5f}}, {0, 0, 2},
+                {0, 0, 2}, "it ends one ulp before x = -0.5 and y = 1: only the cells below them");
+    check_range({{-0.9f, 0.2f, 2.5f}, {std::nextafter(-0.5f, 0.0f), std::nextafter(1.0f, 2.0f), 2.5f}}, {0, 0, 2},
+                {1, 1, 2}, "it ends one ulp past x = -0.5 and y = 1: the cells beyond them too");
 }

@@ -31,7 +31,7 @@ void check(const Case& c)
         for (std::uint32_t o : c.lists[k])
             lists << ' ' << o;
     }
-    INFO("closest_in_cell in cell " << c.cell << " (it ends at t = " << walk.cell_exit() << "), " << lists.str()
+    INFO("07.6 closest_in_cell in cell " << c.cell << " (it ends at t = " << walk.cell_exit() << "), " << lists.str()
          << ", t in (" << c.range.min << ", " << c.range.max << "), best before: " << show(c.best_before)
          << ": returned " << std::boolalpha << got << " with best " << show(best) << "; expected " << c.changed
          << " with " << show(ObjectHit{c.t, c.object}) << ": " << c.why);
@@ -85,9 +85,62 @@ GRADED_TEST("the grid: a near object that only occupies a later cell beats a far
     const UniformGrid grid(grid_of({{0}, {1}, {0}}));
     ObjectHit hit;
     const bool found = grid.closest(ray, all, o, hit);
-    INFO("the grid's closest hit along " << show(ray) << " with the far sphere 0 (t = 3.3) listed in cells 0 and 2 and "
+    INFO("07.6 the grid's closest hit along " << show(ray) << " with the far sphere 0 (t = 3.3) listed in cells 0 and 2 and "
          "the near sphere 1 (t = 2.3) in cell 1: got " << (found ? show(hit) : "no hit") << ", expected object 1: the hit "
          "of sphere 0 found in cell 0 lies beyond it, and must not end the walk");
     CHECK(found);
     CHECK(hit.object == 1);
+}
+
+namespace {
+
+// One call of closest_in_cell on the hand grid with cell 0 listing `list`, from the walk `walk`
+// (built by hand), over `o`: what it returns and leaves in best.
+void check_in(const std::vector<std::vector<std::uint32_t>>& lists, const GridWalk& walk, Interval range,
+              const Objects& o, bool changed, int object, float t, const char* why)
+{
+    const Grid grid = grid_of(lists);
+    ObjectHit best;
+    const bool got = closest_in_cell(grid, walk, ray, range, o, best);
+    INFO("07.6 closest_in_cell in cell " << walk.p << " of the hand grid, from " << show(walk) << ", t in (" << range.min
+         << ", " << range.max << "): returned " << std::boolalpha << got << " with best " << show(best) << "; expected "
+         << changed << " with " << show(ObjectHit{t, object}) << ": " << why);
+    CHECK(got == changed);
+    CHECK(best.object == object);
+    if (object >= 0)
+        CHECK(best.t == t);
+}
+
+}  // namespace
+
+GRADED_TEST("closest_in_cell: a hit one ulp beyond the cell's exit is left, one exactly on it or one ulp before it is kept", "07.6", 3)
+{
+    // Triangle 3, in x = 1, is hit at exactly t = 2; cell 0's walk is made to leave the cell one
+    // ulp before that, at it, and one ulp after it.
+    GridWalk exit_before = walk_in(0), exit_on = walk_in(0), exit_after = walk_in(0);
+    exit_before.t_max[0] = std::nextafter(2.0f, 1.0f);
+    exit_after.t_max[0] = std::nextafter(2.0f, 3.0f);
+    check_in({{3}, {}, {}}, exit_before, all, objects(), false, -1, 0,
+             "the cell ends one ulp before t = 2: the hit lies beyond it");
+    check_in({{3}, {}, {}}, exit_on, all, objects(), true, 3, 2.0f, "the cell ends at t = 2: the hit is no farther");
+    check_in({{3}, {}, {}}, exit_after, all, objects(), true, 3, 2.0f,
+             "the cell ends one ulp after t = 2: the hit is inside");
+}
+
+GRADED_TEST("closest_in_cell: in the walk's last cell a hit past the box's face is kept, up to the range's end (cell_exit), not only up to the next boundary", "07.6", 3)
+{
+    // Object 6, a triangle in x = 3.001, is hit at t = 4.001: past the box's face x = 3 (t = 4),
+    // where rounding can put a hit on that face. Listed in cell 2, the walk's last cell, whose
+    // next boundary is that face (t_max = 4 = t_end): cell_exit() is the range's end there.
+    const std::vector<Triangle> triangles = {across, across, across,
+                                             Triangle{{3.001f, -1, -1}, {3.001f, 3, -1}, {3.001f, -1, 3}}};
+    const Objects o = objects_over(spheres, triangles);
+    ObjectHit h;
+    REQUIRE(o.intersect(6, ray, all, h));
+    check_in({{}, {}, {6}}, walk_in(2), all, o, true, 6, h.t,
+             "the last cell reaches to the range's end (infinity): the hit at t = 4.001, past t_max = 4, is kept");
+    check_in({{}, {}, {6}}, walk_in(2, 4.5f), {0.0f, 4.5f}, o, true, 6, h.t,
+             "the range ends at t = 4.5, past the face: the last cell reaches to 4.5 and keeps the hit at 4.001");
+    check_in({{}, {6}, {}}, walk_in(1), all, o, false, -1, 0,
+             "listed in cell 1, which ends at t = 3 and is not the last: the hit at 4.001 is beyond it");
 }

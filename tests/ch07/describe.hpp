@@ -42,6 +42,49 @@ inline std::string show(const GridWalk& w)
     return s.str();
 }
 
+// The first field in which two walks differ, in words ("t_max[1]: got 1.75, expected 2.75"), or ""
+// when they agree in every field (a NaN agrees with a NaN): so a failing case names what differs.
+// t_first and t_delta, doubles, may differ by `relative` of the expected value (0: not at all).
+inline std::string first_difference(const GridWalk& got, const GridWalk& expected, double relative = 0.0)
+{
+    std::ostringstream s;
+    s.precision(17);
+    const auto differ = [](double a, double b) { return !(a == b || (std::isnan(a) && std::isnan(b))); };
+    const auto differ_by = [&](double a, double b) {
+        return differ(a, b) && !(std::isfinite(b) && std::abs(a - b) <= relative * std::abs(b));
+    };
+    const auto field = [&](const char* name, int axis, double a, double b) {
+        if (axis >= 0)
+            s << name << '[' << axis << "]: got " << a << ", expected " << b;
+        else
+            s << name << ": got " << a << ", expected " << b;
+        return s.str();
+    };
+    if (got.missed != expected.missed)
+        return field("missed", -1, got.missed, expected.missed);
+    if (got.p != expected.p)
+        return field("p", -1, got.p, expected.p);
+    for (int a = 0; a < 3; ++a) {
+        if (got.step_p[a] != expected.step_p[a])
+            return field("step_p", a, got.step_p[a], expected.step_p[a]);
+        if (got.steps[a] != expected.steps[a])
+            return field("steps", a, got.steps[a], expected.steps[a]);
+        if (differ_by(got.t_first[a], expected.t_first[a]))
+            return field("t_first", a, got.t_first[a], expected.t_first[a]);
+        if (differ_by(got.t_delta[a], expected.t_delta[a]))
+            return field("t_delta", a, got.t_delta[a], expected.t_delta[a]);
+        if (differ(got.t_max[a], expected.t_max[a]))
+            return field("t_max", a, got.t_max[a], expected.t_max[a]);
+    }
+    if (differ(got.t_enter, expected.t_enter))
+        return field("t_enter", -1, got.t_enter, expected.t_enter);
+    if (differ(got.t_end, expected.t_end))
+        return field("t_end", -1, got.t_end, expected.t_end);
+    if (differ(got.t_range, expected.t_range))
+        return field("t_range", -1, got.t_range, expected.t_range);
+    return "";
+}
+
 inline std::string show(const std::vector<int>& cells)
 {
     std::ostringstream s;

@@ -9,7 +9,7 @@ namespace {
 void check(const Bounds& box, int objects, float lambda, const cell3& expected, const char* why)
 {
     const cell3 got = grid_resolution(box, objects, lambda);
-    INFO("grid_resolution(" << show(box) << ", " << objects << " objects, lambda " << lambda << "): got " << show(got)
+    INFO("07.1 grid_resolution(" << show(box) << ", " << objects << " objects, lambda " << lambda << "): got " << show(got)
          << ", expected " << show(expected) << ": " << why);
     CHECK(got == expected);
 }
@@ -61,6 +61,51 @@ GRADED_TEST("grid_resolution: at least 1 and at most max_cells_per_axis cells pe
     check(Bounds{}, 5, 1.0f, {1, 1, 1}, "an empty box (Bounds{}, nothing inside) though 5 objects are counted: one cell");
     check(box({0, 0, 0}, {1, 1, 1}), -3, 1.0f, {1, 1, 1}, "a negative count: one cell");
     const cell3 wide = grid_resolution(box({0, 0, 0}, {1, 1, 1}), 100000000, 1000.0f, 2048);
-    INFO("grid_resolution with max_per_axis = 2048 (the hashed grid's limit), 1e11 cells asked: got " << show(wide));
+    INFO("07.1 grid_resolution with max_per_axis = 2048 (the hashed grid's limit), 1e11 cells asked: got " << show(wide));
     CHECK(wide == cell3(2048, 2048, 2048));
+}
+
+GRADED_TEST("grid_resolution: axes are dropped until none is thinner than a cell, however many rounds that takes", "07.1", 3)
+{
+    // Extents 10 x 1 x 0.5 and 8 cells: the cube root gives s = cbrt(5 / 8) = 0.85, so z (0.5) is
+    // thinner than a cell. Over x and y, s = sqrt(10 / 8) = 1.12: now y (1) is thinner too. Over x
+    // alone, s = 10 / 8 = 1.25: 8 x 1 x 1. Stopping after one round gives 10 / 1.12 = 8.9 -> 9 x 1 x 1.
+    check(box({0, 0, 0}, {10, 1, 0.5f}), 8, 1.0f, {8, 1, 1},
+          "z is dropped in the first round, y only in the second, when s has grown to 1.12: s = 10 / 8 = 1.25");
+    check(box({0, 0, 0}, {0.5f, 10, 1}), 4, 2.0f, {1, 8, 1}, "the same box turned: its long axis y gets the 8 cells");
+}
+
+GRADED_TEST("grid_resolution: an axis exactly one cell thick (extent = s), or one ulp either side, gets one cell", "07.1", 3)
+{
+    // 8 x 1 x 8 with 64 cells: s = cbrt(64 / 64) = 1, so y's extent is exactly s. Dropping it leaves
+    // s = sqrt(64 / 64) = 1 (at extent = s the two roots agree): 8 x 1 x 8 either way.
+    check(box({0, 0, 0}, {8, 1, 8}), 64, 1.0f, {8, 1, 8}, "y's extent 1 equals the cell's side 1: one cell");
+    check(box({0, 0, 0}, {8, std::nextafter(1.0f, 0.0f), 8}), 64, 1.0f, {8, 1, 8},
+          "y's extent is one ulp below the cell's side: one cell");
+    check(box({0, 0, 0}, {8, std::nextafter(1.0f, 2.0f), 8}), 64, 1.0f, {8, 1, 8},
+          "y's extent is one ulp above the cell's side: round(1.0000001) = 1 cell");
+}
+
+GRADED_TEST("grid_resolution: n_i is extent_i / s rounded to the nearest, down as well as up", "07.1", 3)
+{
+    // 10 / cbrt(1000 / 800) = 9.28: 9, not 10.
+    check(box({0, 0, 0}, {10, 10, 10}), 800, 1.0f, {9, 9, 9}, "9.28 cells per axis round to 9");
+    // 8 / cbrt(8 x 2 x 2 / 40) = 8 / 0.93 = 8.6 -> 9 along x, 2.15 -> 2 along y and z.
+    check(box({0, 0, 0}, {8, 2, 2}), 40, 1.0f, {9, 2, 2}, "8.6 cells along x round to 9, 2.15 along y and z to 2");
+}
+
+GRADED_TEST("grid_resolution: exactly max_per_axis cells is allowed, one more is clamped, and a count past any int clamps too", "07.1", 3)
+{
+    const auto check_max = [](const Bounds& b, int objects, float lambda, int max, const cell3& expected, const char* why) {
+        const cell3 got = grid_resolution(b, objects, lambda, max);
+        INFO("07.1 grid_resolution(" << show(b) << ", " << objects << " objects, lambda " << lambda << ", max_per_axis "
+             << max << "): got " << show(got) << ", expected " << show(expected) << ": " << why);
+        CHECK(got == expected);
+    };
+    check_max(box({0, 0, 0}, {1, 1, 1}), 125, 1.0f, 5, {5, 5, 5}, "5 cells per axis asked, at most 5: 5");
+    check_max(box({0, 0, 0}, {1, 1, 1}), 216, 1.0f, 5, {5, 5, 5}, "6 cells per axis asked, at most 5: 5");
+    check_max(box({0, 0, 0}, {1, 1, 1}), 125, 1.0f, 6, {5, 5, 5}, "5 cells per axis asked, at most 6: 5");
+    // 1e33 cells: 1e11 per axis, past any int: clamped while still a float, not converted first.
+    check(box({0, 0, 0}, {1, 1, 1}), 100000000, 1e25f, {max_cells_per_axis, max_cells_per_axis, max_cells_per_axis},
+          "1e33 cells asked, 1e11 per axis (no int holds it): max_cells_per_axis along each axis");
 }
