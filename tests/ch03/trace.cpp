@@ -277,3 +277,31 @@ GRADED_TEST("trace: the search starts at secondary_t_min (1e-4): a surface neare
         CHECK(near(got.colour, expected));
     }
 }
+
+GRADED_TEST("trace: a ray that misses sees background(scene, ray.dir), the sky in its own direction, and a mirror shows the sky along its reflected ray", "03.5", 2)
+{
+    // A sky that is not one colour: its horizon (scene.shapes.background) and zenith differ, so the
+    // colour a missing ray sees depends on its direction.
+    WhittedScene scene = empty_scene();
+    scene.zenith = color(0.05f, 0.1f, 0.6f);
+    const color floor_albedo{0.1f};
+    add_square(scene, {0, 0, -2}, {1, 0, 0}, {0, 0, -1}, 3.0f, floor_albedo, mirror(0.7f));
+
+    const Ray up{{0.3f, 1, 0}, glm::normalize(vec3(0.3f, 0.6f, -1.0f))};
+    const color sky_up = background(scene, up.dir);
+    const Traced miss = run(scene, up, TraceSettings{});
+    INFO(miss.report << "; expected the sky in the ray's direction, background(scene, ray.dir) = " << show(sky_up)
+         << " (the horizon colour is " << show(scene.shapes.background) << ", the zenith's " << show(scene.zenith) << ")");
+    CHECK(near(miss.colour, sky_up));
+
+    // Down at 45 degrees onto the mirror floor at (0.3, 0, -1): the reflected ray leaves along
+    // (0, 1, -1) / sqrt(2) and sees the sky there.
+    const Ray down{{0.3f, 1, 0}, glm::normalize(vec3(0, -1, -1))};
+    const color sky_reflected = background(scene, glm::normalize(vec3(0, 1, -1)));
+    const color expected = lit(scene, floor_albedo, {0, 1, 0}) + 0.7f * sky_reflected;
+    const Traced mirrored = run(scene, down, TraceSettings{});
+    INFO(mirrored.report << "; expected the floor's local shade + 0.7 x the sky along (0, 1, -1) / sqrt(2), "
+         << show(sky_reflected) << ": " << show(expected));
+    CHECK(near(mirrored.colour, expected));
+    CHECK(mirrored.rays.reflected == 1);
+}
