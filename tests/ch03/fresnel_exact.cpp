@@ -105,7 +105,7 @@ STABILITY_TEST("fresnel_dielectric: at the critical angle and one float step eit
     }
 }
 
-STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazing or |cos_i| a hair above 1 stays in [0, 1]", "03.3", 2)
+STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazing or cos_i a hair beyond 1 either way stays in [0, 1]", "03.3", 2)
 {
     // ior = 1 is no interface at all: nothing reflects, except at exactly grazing incidence, where
     // both fractions would be 0 / 0 (the contract then says 1: sin^2(theta_t) = 1).

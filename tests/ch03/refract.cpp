@@ -193,7 +193,7 @@ STABILITY_TEST("refract: unit length kept and Snell's law met in float, against 
     }
 }
 
-STABILITY_TEST("refract: never a NaN: a grazing ray (v.n = 0) enters at the critical angle (at ior 1, exactly critical: no ray), head-on rays pass straight, |v.n| a hair above 1 is no trouble", "03.2", 2)
+STABILITY_TEST("refract: never a NaN: a grazing ray (v.n = 0) enters at the critical angle (at ior 1, exactly critical: no ray), head-on rays pass straight, v.n a hair beyond 1 either way is no trouble", "03.2", 2)
 {
     const vec3 up{0, 1, 0};
     // v.n = 0 exactly (+0 or -0): it counts as arriving from outside, and enters at theta_t = theta_c.
