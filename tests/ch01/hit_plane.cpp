@@ -4,6 +4,8 @@
 #include "tests/grader/graded.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <limits>
 
 using namespace rt;
 using rt::grader::show;
@@ -141,4 +143,68 @@ STABILITY_TEST("a plane behind the eye is never hit, and the same plane ahead al
         if (t)
             CHECK(rt::grader::rel_error(*t, reference_t(ray, floor_plane)) <= 1e-6);
     }
+}
+
+GRADED_TEST("a hit exactly at range.min or range.max does not count; one float step inside the range it does", "01.2", 2)
+{
+    // Straight down from 3 above the floor: t = n.(b - u) / n.v = -3 / -1 = 3 exactly.
+    const Ray down{{0, 3, 0}, {0, -1, 0}};
+    const float below = std::nextafter(3.0f, 0.0f), above = std::nextafter(3.0f, 4.0f);
+    struct Case {
+        Interval range;
+        bool hits;
+        const char* why;
+    };
+    for (const Case& c : {Case{{3.0f, infinity}, false, "t = 3 is range.min itself: the range is open"},
+                          Case{{below, infinity}, true, "range.min is one float step below t = 3"},
+                          Case{{above, infinity}, false, "range.min is one float step beyond t = 3"},
+                          Case{{1e-4f, 3.0f}, false, "t = 3 is range.max itself: the range is open"},
+                          Case{{1e-4f, above}, true, "range.max is one float step beyond t = 3"},
+                          Case{{1e-4f, below}, false, "range.max is one float step below t = 3"}}) {
+        const std::optional<float> t = hit_plane(down, floor_plane, c.range);
+        INFO(describe(down, floor_plane, c.range) << " (" << c.why << "): got t = " << show(t) << ", expected "
+             << (c.hits ? "t = 3" : "no hit"));
+        CHECK(t.has_value() == c.hits);
+        if (t && c.hits)
+            CHECK(*t == 3.0f);
+    }
+}
+
+GRADED_TEST("planes and rays 1e4 to 1e5 from the origin: t within 1e-6 of double, as n.(b - u) / n.v keeps it", "01.2", 2)
+{
+    // b - u of two nearby points is exact in float (or nearly), so n.(b - u) keeps float's precision
+    // however far the scene lies from the origin. n.b - n.u, the same number written as the plane's
+    // offset minus the eye's, subtracts two dot products near |b| and cancels: at 3e4 from the origin
+    // each is rounded by about 3e4 x 6e-8 = 2e-3, a relative error of 1e-4 to 1e-3 for a plane a few
+    // units away.
+    const Plane planes[] = {{{12345.5f, -23456.25f, 34567.75f}, glm::normalize(vec3(2, -1, 2))},
+                            {{-40000.0f, 10000.0f, 80000.0f}, glm::normalize(vec3(-3, 4, 12))},
+                            {{-9876.5f, 54321.0f, -4096.25f}, glm::normalize(vec3(1, 1, -1))}};
+    for (const Plane& plane : planes)
+        for (const float distance : {0.5f, 1.0f, 3.0f, 7.0f, 20.0f}) {
+            const Ray ray{plane.b + distance * plane.n + vec3(3.25f, -1.5f, 2.0f),
+                          glm::normalize(vec3(-0.3f, 0.2f, 0.0f) - plane.n)};
+            const double expected = reference_t(ray, plane);
+            const std::optional<float> t = hit_plane(ray, plane, Interval{});
+            INFO(describe(ray, plane, Interval{}) << ": got t = " << show(t) << ", expected " << std::setprecision(10)
+                 << expected << " (relative error " << (t ? rt::grader::rel_error(*t, expected) : 0.0)
+                 << ", allowed 1e-6: take b - u first, then the dot product)");
+            REQUIRE(t);
+            CHECK(rt::grader::rel_error(*t, expected) <= 1e-6);
+        }
+}
+
+STABILITY_TEST("a NaN or an infinity in the ray gives no hit, never a NaN t; a ray with n.v = -0 is parallel", "01.2", 1)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const Ray& ray : {Ray{{nan, 3, 0}, {0, -1, 0}}, Ray{{0, nan, 0}, {0, -1, 0}}, Ray{{0, 3, 0}, {nan, nan, nan}},
+                           Ray{{0, infinity, 0}, {0, -1, 0}}, Ray{{0, 3, 0}, {0, -infinity, 0}},
+                           Ray{{0, 1, 0}, {-1, -0.0f, -0.0f}}, Ray{{0, 0, 0}, {-1, -0.0f, -0.0f}}}) {
+        const std::optional<float> t = hit_plane(ray, floor_plane, Interval{});
+        INFO(describe(ray, floor_plane, Interval{}) << ": got t = " << show(t) << ", expected no hit");
+        CHECK_FALSE(t);
+    }
+    const Ray sound{{0, 3, 0}, {0, -1, 0}};
+    INFO(describe(sound, floor_plane, Interval{}) << ": expected a hit at t = 3");
+    CHECK(hit_plane(sound, floor_plane, Interval{}));
 }

@@ -102,6 +102,34 @@ inline void range_respected(SphereTestFn test)
     }
 }
 
+// The range is open at both ends: along -z from the origin the unit sphere at (0, 0, -5) is met at
+// t = 4 and t = 6 exactly (every product is exact), and each end of the range sits on one of them
+// and one float step either side.
+inline void range_ends(SphereTestFn test)
+{
+    const Sphere sphere{{0, 0, -5}, 1};
+    const Ray ahead{{0, 0, 0}, {0, 0, -1}};
+    const float before_4 = std::nextafter(4.0f, 0.0f), past_4 = std::nextafter(4.0f, 5.0f);
+    const float before_6 = std::nextafter(6.0f, 0.0f), past_6 = std::nextafter(6.0f, 7.0f);
+    struct Case {
+        Interval range;
+        float expected;  // 0: no hit
+    };
+    for (const Case& c : {Case{{4.0f, infinity}, 6}, Case{{before_4, infinity}, 4}, Case{{past_4, infinity}, 6},
+                          Case{{1e-4f, 4.0f}, 0}, Case{{1e-4f, past_4}, 4}, Case{{4.0f, 6.0f}, 0},
+                          Case{{4.0f, past_6}, 6}, Case{{6.0f, infinity}, 0}, Case{{before_6, infinity}, 6}}) {
+        const std::optional<float> t = test(ahead, sphere, c.range);
+        std::ostringstream expected;
+        expected << std::setprecision(9);
+        (c.expected > 0 ? expected << "t = " << c.expected : expected << "no hit");
+        INFO(query(ahead, sphere, c.range) << " (the sphere is met at t = 4 and t = 6; the range is open): got "
+             << show(t) << ", expected " << expected.str());
+        CHECK(t.has_value() == (c.expected > 0));
+        if (t && c.expected > 0)
+            CHECK(*t == c.expected);
+    }
+}
+
 // Tangent rays along +x at height y past a unit sphere whose centre lies `distance` ahead: at
 // y = 1 the discriminant is exactly 0 (no hit); one float step below 1 the ray enters (a hit,
 // near t = distance); one step above it passes by. Axis-aligned, so every product is exact.
@@ -216,6 +244,10 @@ inline void keeps_double_precision(std::optional<double> (*test)(const BasicRay<
     GRADED_TEST(#function ": only hits inside the range count; past the near side comes the far one", number, 2)  \
     {                                                                                                              \
         rt::grader::spheres::range_respected(&function<float>);                                                   \
+    }                                                                                                              \
+    GRADED_TEST(#function ": a hit exactly at range.min or range.max does not count; one float step inside does", number, 2) \
+    {                                                                                                              \
+        rt::grader::spheres::range_ends(&function<float>);                                                        \
     }                                                                                                              \
     GRADED_TEST(#function ": in double, hits and misses as exact and t within 1e-10 of it", number, 1)               \
     {                                                                                                              \

@@ -142,6 +142,64 @@ inline void range_respected(TriangleTestFn test)
     }
 }
 
+// The range is open at both ends: the triangle straight ahead is met at t = 5 exactly, and each end
+// of the range sits on it and one float step either side.
+inline void range_ends(TriangleTestFn test)
+{
+    const Triangle tri{{-1, -1, -5}, {1, -1, -5}, {0, 1, -5}};
+    const Ray ahead{{0, 0, 0}, {0, 0, -1}};
+    const float before = std::nextafter(5.0f, 0.0f), past = std::nextafter(5.0f, 6.0f);
+    struct Case {
+        Interval range;
+        bool hits;
+    };
+    for (const Case& c : {Case{{5.0f, infinity}, false}, Case{{before, infinity}, true}, Case{{past, infinity}, false},
+                          Case{{1e-4f, 5.0f}, false}, Case{{1e-4f, past}, true}, Case{{1e-4f, before}, false}}) {
+        const std::optional<TriangleHit<float>> hit = test(ahead, tri, c.range);
+        INFO(query(ahead, tri, c.range) << " (the triangle is met at t = 5; the range is open): got " << show(hit)
+             << ", expected " << (c.hits ? "t = 5" : "no hit"));
+        CHECK(hit.has_value() == c.hits);
+        if (hit && c.hits)
+            CHECK(hit->t == 5.0f);
+    }
+}
+
+// Edges and corners belong to the triangle, and a float step beyond them does not. In the plane
+// z = 0, with corners (1, 1), (5, 1), (1, 5) and rays straight down from z = 3, every difference and
+// product is exact: a point one float step outside edge a-b (y just below 1), edge c-a (x just below
+// 1) or corner a misses, and one step inside hits. Along edge b-c (x + y = 6) the point (1.5, 4.5)
+// has beta = 1/8 and gamma = 7/8, and one float step of y either way moves beta + gamma one float
+// step off 1.
+inline void edge_steps(TriangleTestFn test)
+{
+    const Triangle tri{{1, 1, 0}, {5, 1, 0}, {1, 5, 0}};
+    const float below_1 = std::nextafter(1.0f, 0.0f), above_1 = std::nextafter(1.0f, 2.0f);
+    const float below_45 = std::nextafter(4.5f, 0.0f), above_45 = std::nextafter(4.5f, 5.0f);
+    struct Case {
+        float x, y;
+        bool hits;
+        const char* where;
+    };
+    for (const Case& c : {Case{3, 1, true, "on edge a-b"}, Case{3, below_1, false, "one float step outside edge a-b"},
+                          Case{3, above_1, true, "one float step inside edge a-b"},
+                          Case{1, 3, true, "on edge c-a"}, Case{below_1, 3, false, "one float step outside edge c-a"},
+                          Case{above_1, 3, true, "one float step inside edge c-a"},
+                          Case{1.5f, 4.5f, true, "on edge b-c"}, Case{1.5f, above_45, false, "one float step outside edge b-c"},
+                          Case{1.5f, below_45, true, "one float step inside edge b-c"},
+                          Case{1, 1, true, "on corner a"}, Case{below_1, below_1, false, "one float step outside corner a"},
+                          Case{above_1, above_1, true, "one float step inside corner a"}}) {
+        const Ray ray{{c.x, c.y, 3}, {0, 0, -1}};
+        const std::optional<TriangleHit<float>> hit = test(ray, tri, Interval{});
+        std::ostringstream at;
+        at << std::setprecision(9) << "(" << c.x << ", " << c.y << ")";
+        INFO(query(ray, tri, Interval{}) << ", through " << at.str() << ", " << c.where << ": got " << show(hit)
+             << ", expected " << (c.hits ? "a hit at t = 3" : "no hit"));
+        CHECK(hit.has_value() == c.hits);
+        if (hit && c.hits)
+            CHECK(hit->t == Approx(3.0f).epsilon(1e-6));
+    }
+}
+
 // Rays broken upstream, with a NaN or an infinity in their origin or direction, hit nothing (so a
 // NaN never reaches a pixel), and the same triangle is still hit by a sound ray.
 inline void broken_rays(TriangleTestFn test)
@@ -320,6 +378,16 @@ inline void keeps_double_precision(std::optional<TriangleHit<double>> (*test)(co
     GRADED_TEST(#function ": only hits inside the range count, never one behind the origin", number, 2)               \
     {                                                                                                                  \
         rt::grader::triangles::range_respected(&function<float>);                                                     \
+    }                                                                                                                  \
+    GRADED_TEST(#function ": a hit exactly at range.min or range.max does not count; one float step inside does", \
+                number, 2)                                                                                             \
+    {                                                                                                                  \
+        rt::grader::triangles::range_ends(&function<float>);                                                          \
+    }                                                                                                                  \
+    GRADED_TEST(#function ": one float step outside an edge or a corner misses; on it and one step inside hit",       \
+                number, 2)                                                                                             \
+    {                                                                                                                  \
+        rt::grader::triangles::edge_steps(&function<float>);                                                          \
     }                                                                                                                  \
     GRADED_TEST(#function ": in double, hits and misses as exact with t and barycentrics to 1e-9", number, 1)         \
     {                                                                                                                  \

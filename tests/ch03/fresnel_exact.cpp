@@ -2,6 +2,7 @@
 #include "tests/ch03/optics_reference.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <initializer_list>
 
 using namespace rt;
@@ -104,7 +105,7 @@ STABILITY_TEST("fresnel_dielectric: at the critical angle and one float step eit
     }
 }
 
-STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazing or |cos_i| a hair above 1 stays in [0, 1]", "03.3", 2)
+STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazing or cos_i a hair beyond 1 either way stays in [0, 1]", "03.3", 2)
 {
     // ior = 1 is no interface at all: nothing reflects, except at exactly grazing incidence, where
     // both fractions would be 0 / 0 (the contract then says 1: sin^2(theta_t) = 1).
@@ -129,4 +130,22 @@ STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazi
         REQUIRE(std::isfinite(R));
         CHECK(std::abs(R - 0.04f) <= 1e-6f);
     }
+}
+
+GRADED_TEST("fresnel_dielectric: leaving at ior 2 where sin^2(theta_t) is exactly 1, exactly 1; one float step steeper, in [0.99, 1]", "03.3", 1)
+{
+    // c = 0x1.bb67aep-1: c^2 rounds to 0.75, so sin^2(theta_t) = 4 (1 - c^2) = 1 exactly in float,
+    // the edge of total internal reflection; one float step below it, beyond the edge.
+    const float at = 0x1.bb67aep-1f, below = std::nextafter(at, 0.0f), above = std::nextafter(at, 1.0f);
+    for (const float c : {below, at}) {
+        const float R = fresnel_dielectric(-c, 2.0f);
+        INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+             << ", expected exactly 1 (sin^2(theta_t) " << (c == at ? "= 1" : "> 1") << " in float)");
+        CHECK(R == 1.0f);
+    }
+    const float R = fresnel_dielectric(-above, 2.0f);
+    INFO(query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
+    REQUIRE(std::isfinite(R));
+    CHECK(R >= 0.99f);
+    CHECK(R <= 1.0f);
 }

@@ -2,6 +2,7 @@
 #include "tests/ch03/optics_reference.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <initializer_list>
 
 using namespace rt;
@@ -95,4 +96,22 @@ STABILITY_TEST("fresnel_schlick: within 0.06 (water), 0.037 (glass), 0.075 (diam
         REQUIRE(std::isfinite(R));
         CHECK(std::abs(R - (cos_i == 0.0f ? 1.0f : 0.04f)) <= 1e-6f);
     }
+}
+
+GRADED_TEST("fresnel_schlick: leaving at ior 2 where sin^2(theta_t) is exactly 1, exactly 1; one float step steeper, in [0.99, 1]", "03.4", 1)
+{
+    // As for 03.3: c^2 rounds to 0.75 and sin^2(theta_t) = 4 (1 - c^2) is exactly 1 in float.
+    const float at = 0x1.bb67aep-1f, below = std::nextafter(at, 0.0f), above = std::nextafter(at, 1.0f);
+    for (const float c : {below, at}) {
+        const float R = fresnel_schlick(-c, 2.0f);
+        INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+             << ", expected exactly 1 (sin^2(theta_t) " << (c == at ? "= 1" : "> 1") << " in float; Schlick's curve of "
+             << "cos_i would give " << with_cos_i(-c, 2.0f) << ")");
+        CHECK(R == 1.0f);
+    }
+    const float R = fresnel_schlick(-above, 2.0f);
+    INFO(query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
+    REQUIRE(std::isfinite(R));
+    CHECK(R >= 0.99f);
+    CHECK(R <= 1.0f);
 }

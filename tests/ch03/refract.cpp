@@ -4,6 +4,7 @@
 #include "tests/ch03/optics_reference.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <initializer_list>
 
 using namespace rt;
@@ -192,7 +193,7 @@ STABILITY_TEST("refract: unit length kept and Snell's law met in float, against 
     }
 }
 
-STABILITY_TEST("refract: never a NaN: a grazing ray (v.n = 0) enters at the critical angle (at ior 1, exactly critical: no ray), head-on rays pass straight, |v.n| a hair above 1 is no trouble", "03.2", 2)
+STABILITY_TEST("refract: never a NaN: a grazing ray (v.n = 0) enters at the critical angle (at ior 1, exactly critical: no ray), head-on rays pass straight, v.n a hair beyond 1 either way is no trouble", "03.2", 2)
 {
     const vec3 up{0, 1, 0};
     // v.n = 0 exactly (+0 or -0): it counts as arriving from outside, and enters at theta_t = theta_c.
@@ -230,4 +231,66 @@ STABILITY_TEST("refract: never a NaN: a grazing ray (v.n = 0) enters at the crit
         }
     }
     CHECK(found > 0);
+}
+
+namespace {
+
+// Leaving glass of index 2 through a floor (n = (0, 1, 0)), so v.n is exactly v.y = c: the float
+// c whose square rounds to 0.75 puts cos^2(theta_t) = (1 - 2)(1 + 2) + 4 c^2 exactly at 0 (so does
+// every order of the float products, 4 being a power of two), one float step smaller below 0, one
+// step larger at 2^-22 above it.
+struct TirBoundary {
+    float below, at, above;  // the cosines
+};
+
+TirBoundary tir_boundary_at_ior_2()
+{
+    const float at = 0x1.bb67aep-1f;
+    return {std::nextafter(at, 0.0f), at, std::nextafter(at, 1.0f)};
+}
+
+}  // namespace
+
+GRADED_TEST("refract: leaving at ior 2 where cos^2(theta_t) is exactly 0 no ray gets out; one float step steeper one does, skimming the surface", "03.2", 2)
+{
+    const vec3 n{0, 1, 0};
+    const TirBoundary c = tir_boundary_at_ior_2();
+    REQUIRE(c.at * c.at == 0.75f);
+    struct Case {
+        float cos_i;
+        bool through;
+        const char* what;
+    };
+    for (const Case& k : {Case{c.below, false, "cos^2(theta_t) = -2^-21 in float: total internal reflection"},
+                          Case{c.at, false, "cos^2(theta_t) = 0 exactly in float: total internal reflection (<= 0)"},
+                          Case{c.above, true, "cos^2(theta_t) = 2^-22 in float: a ray gets out, cos_t = 2^-11"}}) {
+        const vec3 v{static_cast<float>(std::sqrt(1.0 - double(k.cos_i) * k.cos_i)), k.cos_i, 0.0f};
+        const std::optional<vec3> t = refract(v, n, 2.0f);
+        INFO(query(v, n, 2.0f) << ", v.n = " << std::hexfloat << k.cos_i << std::defaultfloat << " (" << k.what
+             << "): got " << optics::show(t) << ", expected "
+             << (k.through ? "a unit direction along the surface, just outside it" : "none"));
+        REQUIRE(t.has_value() == k.through);
+        if (t) {
+            REQUIRE(std::isfinite(t->x + t->y + t->z));
+            CHECK(std::abs(glm::length(*t) - 1.0f) <= unit_tolerance);
+            CHECK(t->y > 0.0f);
+            CHECK(t->y <= 1e-3f);
+        }
+    }
+}
+
+STABILITY_TEST("refract: a grazing ray with v.n = -0 (the sign bit set) enters, as one with v.n = +0 does", "03.2", 1)
+{
+    // v = (-1, -0, -0) against n = (0, 1, 0): the three products are -0 and their sum is -0.
+    const vec3 up{0, 1, 0};
+    const vec3 v{-1.0f, -0.0f, -0.0f};
+    const float vn = glm::dot(v, up);
+    REQUIRE(vn == 0.0f);
+    REQUIRE(std::signbit(vn));
+    check_refraction(v, up, 1.5f, 1e-6);
+    const std::optional<vec3> t = refract(v, up, 1.5f);
+    INFO(query(v, up, 1.5f) << " with v.n = -0: got " << optics::show(t)
+         << ", expected a ray into the glass at the critical angle (-0 is not > 0: it arrives from outside)");
+    REQUIRE(t);
+    CHECK(t->y < 0.0f);
 }

@@ -5,6 +5,7 @@
 #include "tests/ch03/trace_scenes.hpp"
 
 #include <cmath>
+#include <iomanip>
 
 using namespace rt;
 using namespace rt::grader;
@@ -210,4 +211,97 @@ STABILITY_TEST("trace: no NaN or infinity in the figure at depth 16 with no cut-
     CHECK(count_non_finite(image) == 0);
     CHECK(rays.reflected > 0);
     CHECK(rays.refracted > 0);
+}
+
+GRADED_TEST("trace: a secondary ray whose weight is exactly min_weight is traced (at least); one float step short of it is not", "03.5", 2)
+{
+    // Mirrors with k_s = 0.5: the reflected rays weigh exactly 0.5, 0.25, 0.125, ...
+    const WhittedScene mirrors = facing_mirrors(0.5f);
+    const color L = mirror_albedo * ambient;
+    struct Case {
+        float min_weight;
+        int rays;
+        float sum;  // 1 + 0.5 + ... over the bounces traced
+        const char* why;
+    };
+    for (const Case& c : {Case{0.25f, 2, 1.75f, "the second ray weighs 0.25, exactly min_weight: traced"},
+                          Case{std::nextafter(0.25f, 1.0f), 1, 1.5f, "the second ray weighs 0.25, one float step below min_weight: not traced"},
+                          Case{std::nextafter(0.25f, 0.0f), 2, 1.75f, "the second ray weighs 0.25, one float step above min_weight: traced"},
+                          Case{0.5f, 1, 1.5f, "the first ray weighs 0.5, exactly min_weight: traced"},
+                          Case{std::nextafter(0.5f, 1.0f), 0, 1.0f, "the first ray weighs 0.5, just below min_weight: not traced"}}) {
+        TraceSettings settings;
+        settings.max_depth = 16;
+        settings.min_weight = c.min_weight;
+        const Traced got = run(mirrors, between_mirrors, settings);
+        INFO(got.report << std::setprecision(9) << " (min_weight " << c.min_weight << "; " << c.why
+             << "); mirrors of k_s = 0.5: expected " << c.rays << " reflected rays and " << show(c.sum * L));
+        CHECK(got.rays.reflected == static_cast<std::uint64_t>(c.rays));
+        CHECK(near(got.colour, c.sum * L));
+    }
+}
+
+GRADED_TEST("trace: with min_weight 0 a surface with no mirror or glass share (k = 0) still traces no secondary ray", "03.5", 2)
+{
+    // "Only when its k > 0": a dull wall has k_r = k_t = 0, and 0 >= min_weight = 0 must not let a
+    // ray through. The mirror beside it (k_s = 0.5) does trace its one.
+    WhittedScene scene = empty_scene();
+    const color wall_albedo{0.6f, 0.5f, 0.3f};
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, wall_albedo, Material{});
+    TraceSettings settings;
+    settings.min_weight = 0.0f;
+    const color expected = lit(scene, wall_albedo, {0, 0, 1});
+    const Traced dull = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    INFO(dull.report << "; a dull wall with min_weight 0: expected its local shade " << show(expected)
+         << " and no secondary rays");
+    CHECK(dull.rays.reflected == 0);
+    CHECK(dull.rays.refracted == 0);
+    CHECK(near(dull.colour, expected));
+}
+
+GRADED_TEST("trace: the search starts at secondary_t_min (1e-4): a surface nearer than that is not seen, one a little beyond it is", "03.5", 2)
+{
+    // A red wall across the ray at distance d, and a dull grey one behind it at 3. At d = 5e-5 the
+    // red wall lies before secondary_t_min and the ray sees the grey one; at d = 2e-4 and beyond
+    // it sees the red one. (A t_min of 0 sees red at 5e-5; one of 1e-3, Shirley's, grey at 2e-4.)
+    const color red{0.9f, 0.1f, 0.1f}, grey{0.4f};
+    for (const float d : {5e-5f, 2e-4f, 5e-4f}) {
+        WhittedScene scene = empty_scene();
+        add_square(scene, {0, 0, -d}, {1, 0, 0}, {0, 1, 0}, 2.0f, red, Material{});
+        add_square(scene, {0, 0, -3}, {1, 0, 0}, {0, 1, 0}, 2.0f, grey, Material{});
+        const bool sees_red = d > secondary_t_min;
+        const color expected = lit(scene, sees_red ? red : grey, {0, 0, 1});
+        const Traced got = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, TraceSettings{});
+        INFO(got.report << "; a red wall " << d << " ahead and a grey one 3 ahead: expected the "
+             << (sees_red ? "red" : "grey") << " wall's shade " << show(expected) << " (secondary_t_min = "
+             << secondary_t_min << ")");
+        CHECK(near(got.colour, expected));
+    }
+}
+
+GRADED_TEST("trace: a ray that misses sees background(scene, ray.dir), the sky in its own direction, and a mirror shows the sky along its reflected ray", "03.5", 2)
+{
+    // A sky that is not one colour: its horizon (scene.shapes.background) and zenith differ, so the
+    // colour a missing ray sees depends on its direction.
+    WhittedScene scene = empty_scene();
+    scene.zenith = color(0.05f, 0.1f, 0.6f);
+    const color floor_albedo{0.1f};
+    add_square(scene, {0, 0, -2}, {1, 0, 0}, {0, 0, -1}, 3.0f, floor_albedo, mirror(0.7f));
+
+    const Ray up{{0.3f, 1, 0}, glm::normalize(vec3(0.3f, 0.6f, -1.0f))};
+    const color sky_up = background(scene, up.dir);
+    const Traced miss = run(scene, up, TraceSettings{});
+    INFO(miss.report << "; expected the sky in the ray's direction, background(scene, ray.dir) = " << show(sky_up)
+         << " (the horizon colour is " << show(scene.shapes.background) << ", the zenith's " << show(scene.zenith) << ")");
+    CHECK(near(miss.colour, sky_up));
+
+    // Down at 45 degrees onto the mirror floor at (0.3, 0, -1): the reflected ray leaves along
+    // (0, 1, -1) / sqrt(2) and sees the sky there.
+    const Ray down{{0.3f, 1, 0}, glm::normalize(vec3(0, -1, -1))};
+    const color sky_reflected = background(scene, glm::normalize(vec3(0, 1, -1)));
+    const color expected = lit(scene, floor_albedo, {0, 1, 0}) + 0.7f * sky_reflected;
+    const Traced mirrored = run(scene, down, TraceSettings{});
+    INFO(mirrored.report << "; expected the floor's local shade + 0.7 x the sky along (0, 1, -1) / sqrt(2), "
+         << show(sky_reflected) << ": " << show(expected));
+    CHECK(near(mirrored.colour, expected));
+    CHECK(mirrored.rays.reflected == 1);
 }
