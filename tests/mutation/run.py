@@ -177,10 +177,14 @@ class Chapter:
         return {"fate": "survived"}
 
 
-def run_chapter(build, chapter, jobs, limit, equivalent, out_dir):
+def run_chapter(build, chapter, jobs, limit, sample, equivalent, out_dir):
     c = Chapter(build, chapter, jobs)
     mutants = c.generator.mutants()
-    if limit:
+    if sample:
+        # The ids are hashes: the least N are a random sample, and the same one while the lines stay.
+        mutants = sorted(sorted(mutants, key=lambda m: m.id)[:sample], key=lambda m: m.start)
+        limit = sample
+    elif limit:
         mutants = mutants[:limit]
     print(f"{chapter}: {len(mutants)} mutants, {jobs} at a time, {c.time_limit:.0f} s a run at most", flush=True)
     free = list(c.slots)
@@ -211,7 +215,7 @@ def run_chapter(build, chapter, jobs, limit, equivalent, out_dir):
     stale = [] if limit else sorted(i for i, (e, _) in equivalent.items() if e[:2] == c.nn and i not in ids)
     with open(os.path.join(out_dir, chapter + ".json"), "w", encoding="utf-8") as f:
         json.dump({"chapter": chapter, "seconds": round(time.monotonic() - start), "mutants": records,
-                   "limited": bool(limit)}, f, indent=1)
+                   "limited": bool(limit), "sample": sample}, f, indent=1)
     return stale
 
 
@@ -243,7 +247,8 @@ def table(out_dir):
             lines.append(row(exercise, e))
             for k in chapter_total:
                 chapter_total[k] += e[k]
-        lines.append(row(f"**{data['chapter']}**" + (" (limited)" if data.get("limited") else ""), chapter_total))
+        part = f" (a sample of {data['sample']})" if data.get("sample") else (" (limited)" if data.get("limited") else "")
+        lines.append(row(f"**{data['chapter']}**{part}", chapter_total))
         for k in total:
             total[k] += chapter_total[k]
     lines.append(row("**all**", total))
@@ -263,6 +268,8 @@ def main():
     parser.add_argument("--chapters", default="all", help="01,07 or all")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--limit", type=int, default=0, help="only the first N mutants of each chapter (a quick look)")
+    parser.add_argument("--sample", type=int, default=0,
+                        help="only N mutants of each chapter, the same N every run (those of the least ids)")
     args = parser.parse_args()
     chapters = sorted(os.path.basename(p)[:-4] for p in glob.glob(os.path.join(SOURCE_DIR, "solutions", "[0-9][0-9]_*.cpp")))
     if args.chapters != "all":
@@ -276,7 +283,7 @@ def main():
     os.makedirs(out_dir, exist_ok=True)
     stale = []
     for chapter in chapters:
-        stale += run_chapter(args.build, chapter, args.jobs, args.limit, equivalent, out_dir)
+        stale += run_chapter(args.build, chapter, args.jobs, args.limit, args.sample, equivalent, out_dir)
     text = table(out_dir)
     with open(os.path.join(out_dir, "table.md"), "w", encoding="utf-8") as f:
         f.write(text)
