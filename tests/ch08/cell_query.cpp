@@ -120,3 +120,23 @@ GRADED_TEST("closest_in_cell_mailboxed: a hit exactly at the cell's exit is kept
     CHECK(!beaten);
     CHECK(three.object == 3);
 }
+
+GRADED_TEST("closest_in_cell_mailboxed: only hits inside the query's range count", "08.3", 2)
+{
+    // Cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7).
+    const Grid grid = grid_of({{1, 2}, {}, {}});
+    Mailboxes m = fresh();
+    ObjectHit from_min;
+    const bool late = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, {1.72f, infinity}, objects(), from_min);
+    INFO("08.3: cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7), the "
+         "range is t in (1.72, infinity): returned " << std::boolalpha << late << " with " << show(from_min)
+         << "; expected true with sphere 1 at t = 1.75: both of sphere 2's hits lie before the range");
+    CHECK(late);
+    CHECK(from_min.object == 1);
+    ObjectHit short_range;
+    const bool none = closest_in_cell_mailboxed(grid, walk_in(0, 1.2f), m, 2, ray, {0.0f, 1.2f}, objects(), short_range);
+    INFO("08.3: the same cell, the range t in (0, 1.2): returned " << none << " with " << show(short_range)
+         << "; expected false, nothing in the range");
+    CHECK(!none);
+    CHECK(short_range.object == -1);
+}
