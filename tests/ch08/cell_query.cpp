@@ -3,6 +3,8 @@
 #include "08_mailboxing/mailbox_grid.hpp"
 #include "tests/ch07/hand_grid.hpp"
 
+#include <iomanip>
+
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::hand_grid;
@@ -74,4 +76,67 @@ GRADED_TEST("the grid with mailboxes: a near object in a later cell beats a far 
     CHECK(far);
     CHECK(hit.object == 0);
     CHECK(counter(Counter::intersection_tests) == 1);
+}
+
+GRADED_TEST("closest_in_cell_mailboxed: a hit exactly at the cell's exit is kept, one float step beyond it is left; equal t go to the lower object number",
+            "08.3", 3)
+{
+    // Triangles 3, 4 and 5 are one triangle thrice, hit at exactly t = 2: where cell 0 ends.
+    const Grid grid = grid_of({{3, 4, 5}, {}, {}});
+    Mailboxes m = fresh();
+    ObjectHit best;
+    reset_counters();
+    const bool at_exit = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
+    INFO("08.3: cell 0 (the ray leaves it at t = 2) lists triangles 3, 4 and 5, all hit at t = 2: returned " << std::boolalpha
+         << at_exit << " with " << show(best) << " after " << counter(Counter::intersection_tests)
+         << " tests; expected true with object 3 after 3 tests: a hit no farther than the cell's exit is kept, and of "
+         "equal t the lower object number wins");
+    CHECK(at_exit);
+    CHECK(best.object == 3);
+    CHECK(best.t == 2.0f);
+    CHECK(counter(Counter::intersection_tests) == 3);
+
+    // The same cell, its exit one float step before t = 2.
+    GridWalk short_walk = walk_in(0);
+    short_walk.t_max[0] = std::nextafter(2.0f, 0.0f);
+    ObjectHit none;
+    const bool beyond = closest_in_cell_mailboxed(grid, short_walk, m, 2, ray, all, objects(), none);
+    INFO("08.3: the same cell, its exit moved one float step nearer (t = " << std::setprecision(9) << short_walk.cell_exit()
+         << "): returned " << beyond << " with " << show(none) << "; expected false and best untouched (object -1): the hits "
+         "at t = 2 lie beyond the cell");
+    CHECK(!beyond);
+    CHECK(none.object == -1);
+
+    // A best already found at t = 2: object 3 beats object 4 there, object 5 does not.
+    ObjectHit four{2.0f, 4, 0.0f, 0.0f};
+    const bool beats = closest_in_cell_mailboxed(grid, walk_in(0), m, 3, ray, all, objects(), four);
+    ObjectHit three{2.0f, 3, 0.0f, 0.0f};
+    const bool beaten = closest_in_cell_mailboxed(grid_of({{4, 5}, {}, {}}), walk_in(0), m, 4, ray, all, objects(), three);
+    INFO("08.3: best so far object 4 at t = 2, cell 0 lists 3, 4, 5: returned " << beats << " with " << show(four)
+         << " (expected true, object 3); best so far object 3 at t = 2, the cell lists 4 and 5: returned " << beaten
+         << " with " << show(three) << " (expected false, object 3 still)");
+    CHECK(beats);
+    CHECK(four.object == 3);
+    CHECK(!beaten);
+    CHECK(three.object == 3);
+}
+
+GRADED_TEST("closest_in_cell_mailboxed: only hits inside the query's range count", "08.3", 2)
+{
+    // Cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7).
+    const Grid grid = grid_of({{1, 2}, {}, {}});
+    Mailboxes m = fresh();
+    ObjectHit from_min;
+    const bool late = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, {1.72f, infinity}, objects(), from_min);
+    INFO("08.3: cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7), the "
+         "range is t in (1.72, infinity): returned " << std::boolalpha << late << " with " << show(from_min)
+         << "; expected true with sphere 1 at t = 1.75: both of sphere 2's hits lie before the range");
+    CHECK(late);
+    CHECK(from_min.object == 1);
+    ObjectHit short_range;
+    const bool none = closest_in_cell_mailboxed(grid, walk_in(0, 1.2f), m, 2, ray, {0.0f, 1.2f}, objects(), short_range);
+    INFO("08.3: the same cell, the range t in (0, 1.2): returned " << none << " with " << show(short_range)
+         << "; expected false, nothing in the range");
+    CHECK(!none);
+    CHECK(short_range.object == -1);
 }

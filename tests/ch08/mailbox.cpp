@@ -3,6 +3,8 @@
 #include "08_mailboxing/08_mailboxing.hpp"
 #include "tests/ch07/hand_grid.hpp"
 
+#include <iomanip>
+
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::hand_grid;
@@ -107,4 +109,80 @@ GRADED_TEST("mailboxed_intersect: a stored hit counts only inside the range aske
     CHECK(other.tests == 1);
     CHECK(other.answered == 0);
     CHECK(m.box[0].ray == 8);
+}
+
+namespace {
+
+// Object k asked for `r`, a ray of its own (not hand_grid's), counting as ask() does.
+Asked ask_along(Mailboxes& m, std::uint32_t signature, int k, const Ray& r, Interval range)
+{
+    reset_counters();
+    ObjectHit hit;
+    const bool found = mailboxed_intersect(m, signature, objects(), k, r, range, hit);
+    return {found, hit, tests(), answered()};
+}
+
+}  // namespace
+
+GRADED_TEST("mailboxed_intersect: a miss is stored over the previous ray's hit, and a stored miss is a miss even in a range open to infinity",
+            "08.2", 3)
+{
+    Mailboxes m = fresh();
+    const Asked six = ask(m, 6, 2, all);  // ray 6 hits sphere 2 at t = 1.3 and leaves that in its mailbox
+    const Ray by{{-1, 1.0f, 0.5f}, {1, 0, 0}};  // passes 0.5 above sphere 2's centre: its radius is 0.2
+    const Asked seven = ask_along(m, 7, 2, by, all);
+    INFO("08.2: ray 6 hit sphere 2 (" << show(six) << "); then ray 7, " << grader::show(by)
+         << ", passes it by: " << show(seven) << "; sphere 2's mailbox now holds ray " << m.box[2].ray << ", t = "
+         << m.box[2].t << "; expected a miss after 1 test, the mailbox holding ray 7 and t = infinity (not ray 6's t)");
+    CHECK(!seven.found);
+    CHECK(seven.tests == 1);
+    CHECK(m.box[2].ray == 7);
+    CHECK(std::isinf(m.box[2].t));
+    const Asked again = ask_along(m, 7, 2, by, all);
+    INFO("08.2: ray 7 asks sphere 2 again, t in (0, infinity): " << show(again)
+         << "; expected a miss from the mailbox (1 answer, no test): a stored miss is t = infinity, which no range "
+         "holds strictly inside it, not even one open to infinity");
+    CHECK(!again.found);
+    CHECK(again.tests == 0);
+    CHECK(again.answered == 1);
+    // A fresh mailbox, a miss, the same question again.
+    Mailboxes n = fresh();
+    ask_along(n, 1, 0, by, all);
+    const Asked fresh_again = ask_along(n, 1, 0, by, all);
+    INFO("08.2: on fresh mailboxes ray 1 passes sphere 0 by, twice, t in (0, infinity): the second time " << show(fresh_again)
+         << "; expected a miss from the mailbox");
+    CHECK(!fresh_again.found);
+    CHECK(fresh_again.tests == 0);
+    CHECK(fresh_again.answered == 1);
+}
+
+GRADED_TEST("mailboxed_intersect: a stored hit exactly at the range's end or start is outside it; one float step inside, it counts",
+            "08.2", 3)
+{
+    Mailboxes m = fresh();
+    const Asked first = ask(m, 7, 0, all);  // sphere 0 hit at t = 3.3, stored
+    REQUIRE(first.found);
+    const float t = first.hit.t;
+    const struct {
+        Interval range;
+        bool hit;
+        const char* why;
+    } cases[] = {{{0.0f, t}, false, "the range ends exactly at the stored t"},
+                 {{0.0f, std::nextafter(t, infinity)}, true, "the range ends one float step beyond the stored t"},
+                 {{t, infinity}, false, "the range starts exactly at the stored t"},
+                 {{std::nextafter(t, 0.0f), infinity}, true, "the range starts one float step before the stored t"}};
+    for (const auto& c : cases) {
+        const Asked a = ask(m, 7, 0, c.range);
+        INFO("08.2: sphere 0's mailbox holds ray 7's hit at t = " << std::setprecision(9) << t << "; ray 7 asks again for t in ("
+             << c.range.min << ", " << c.range.max << ") (" << c.why << "): " << show(a) << "; expected "
+             << (c.hit ? "the stored hit" : "a miss") << " from the mailbox (1 answer, no test): a stored hit counts only "
+             "strictly inside the range");
+        CHECK(a.found == c.hit);
+        CHECK(a.tests == 0);
+        CHECK(a.answered == 1);
+        if (c.hit && a.found) {
+            CHECK(a.hit.t == t);
+            CHECK(a.hit.object == 0);
+        }
+    }
 }

@@ -3,6 +3,7 @@
 #include "10_hierarchies/bvh.hpp"
 #include "tests/ch07/describe.hpp"
 
+#include <iomanip>
 #include <sstream>
 
 using namespace rt;
@@ -140,11 +141,14 @@ GRADED_TEST("make_leaf: at most leaf_size objects, at the depth limit, or when n
                                            {100, 20, 4, 20, 1.0f, true, "at the depth limit"},
                                            {100, 19, 4, 20, 1.0f, false, "one above it"},
                                            {6, 2, 4, 20, 6.5f, true, "the best split costs more than testing all 6"},
+                                           {100, 21, 4, 20, 1.0f, true, "below the depth limit"},
                                            {6, 2, 4, 20, 6.0f, true, "it costs as much"},
+                                           {6, 2, 4, 20, std::nextafter(6.0f, 0.0f), false,
+                                            "it costs one float step less than testing all 6: it pays"},
                                            {6, 2, 4, 20, infinity, true, "no split is possible"}}) {
         const bool got = make_leaf(c.n, c.depth, c.leaf, c.max_depth, c.cost);
         INFO("make_leaf(" << c.n << " objects, depth " << c.depth << ", leaf_size " << c.leaf << ", max_depth "
-             << c.max_depth << ", best split " << c.cost << "): got " << std::boolalpha << got << ", expected "
+             << c.max_depth << ", best split " << std::setprecision(9) << c.cost << "): got " << std::boolalpha << got << ", expected "
              << c.leaf_expected << ": " << c.why);
         CHECK(got == c.leaf_expected);
     }

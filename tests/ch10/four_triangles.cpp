@@ -190,3 +190,26 @@ GRADED_TEST("hit_four_triangles: triangles without area are never hit, pbrt-v4's
 {
     triangles::degenerate(&one_lane_of_four, {0, 1, 2, 3, 4, 5, 6});
 }
+
+GRADED_TEST("hit_four_triangles: a ray lying in a triangle's own plane (det = 0) does not hit it", "10.6", 1)
+{
+    // The triangle in the plane z = 0, the ray in that plane too, through the triangle's middle:
+    // 02.5's U, V and W are all 0 there, det is 0, and t = 0 / 0 is no number: never a hit, even in
+    // a range from -infinity to infinity.
+    const Triangle tri{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    Objects objects;
+    objects.triangles = &tri;
+    objects.triangle_count = 1;
+    const std::uint32_t index[1] = {0};
+    const FourTriangles g = four_triangles(objects, index, 1);
+    for (const Interval range : {Interval{0.0f, infinity}, Interval{-infinity, infinity}}) {
+        const Ray ray{{-2, 0, 0}, {1, 0, 0}};
+        const FourHits got = hit_four_triangles(g, ray_frame(ray), range);
+        INFO("10.6: " << show(ray) << ", in the plane of the triangle " << show(tri.a) << ", " << show(tri.b) << ", "
+             << show(tri.c) << ", t in (" << range.min << ", " << range.max << "): lanes hit " << got.hit
+             << (got.hit & 1u ? ", lane 0's t " + nine_digits(got.t[0]) + ", det " + nine_digits(got.det[0]) : std::string())
+             << "; expected none: a lane hits only where det is not 0");
+        CHECK(got.tested);
+        CHECK(got.hit == 0u);
+    }
+}

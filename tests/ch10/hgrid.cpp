@@ -4,6 +4,7 @@
 #include "tests/ch07/agreement.hpp"
 
 #include <filesystem>
+#include <iomanip>
 
 using namespace rt;
 using namespace rt::grader;
@@ -158,5 +159,42 @@ TEST_CASE("the hierarchy of grids subdivides only crowded cells, and no deeper t
                          << " objects");
                     CHECK(node.grid.cell_start[p + 1] - node.grid.cell_start[p] > 8u);
                 }
+    }
+}
+
+GRADED_TEST("hgrid_closest: a child grid keeps a hit exactly where its parent's cell ends; one float step beyond, the parent's next cell finds it",
+            "10.5", 3)
+{
+    // A triangle across the ray in the plane x = 2.5, where the root's cell 0 (and its child
+    // grid's cell 1) ends and cell 1 begins, then one float step beyond it. Listed in both root
+    // cells and in the child grid's cell 1.
+    const std::vector<Sphere> no_spheres;
+    const float at = 2.5f, beyond = std::nextafter(2.5f, infinity);
+    for (const float x : {at, beyond}) {
+        const std::vector<Triangle> tris = {{{x, -1, -1}, {x, 3, -1}, {x, -1, 3}}};
+        const Objects o = objects_over(no_spheres, tris);
+        HGrid h;
+        h.grids.push_back(node_of(root_box, 2, {{0}, {0}}));
+        h.grids.push_back(node_of({{0, -1, -1}, {2.5f, 3, 2}}, 2, {{}, {0}}));
+        h.grids[0].child[0] = 1;
+        ObjectHit want;
+        REQUIRE(brute_force().closest(along_x, {0.0f, infinity}, o, want));
+        REQUIRE((x == at ? want.t == 3.5f : want.t > 3.5f));  // the case's own set-up
+        ObjectHit best;
+        reset_counters();
+        const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, o, best);
+        const std::uint64_t cells = counter(Counter::cells_visited);
+        const int expected_cells = x == at ? 3 : 4;
+        INFO("10.5: " << show(along_x) << "; the root's cell 0 ends at t = 3.5 and holds a grid of its own; a triangle in "
+             "the plane x = " << std::setprecision(9) << x << ", hit at t = " << want.t << ", listed in the child's cell 1 and "
+             "the root's cell 1. Got " << answer(found, best) << " after " << cells << " cells visited; expected "
+             << show(want) << " after " << expected_cells << " cells: "
+             << (x == at ? "the child's last cell keeps a hit up to and including where the parent's cell ends (the root's "
+                           "cell 0, the child's cells 0 and 1)"
+                         : "a hit one float step past the parent's cell is not the child's: the root goes on to its cell 1"));
+        CHECK(found);
+        CHECK(best.object == 0);
+        CHECK(best.t == want.t);
+        CHECK(cells == static_cast<std::uint64_t>(expected_cells));
     }
 }

@@ -108,3 +108,99 @@ STABILITY_TEST("watertight together: 10^6 rays from inside a closed sphere of tr
     INFO("10^6 rays from within 200 of the centre of " << e.scene << ": " << e.escaped << " escaped; the first: " << e.first);
     CHECK(e.escaped == 0);
 }
+
+namespace {
+
+// One triangle across the ray from the origin along +x, in the plane x = `x`, in the y-z square
+// (-1, -1) to (3, 3): 02.5's edge functions are -8, -4 and -4 there, so at x = 4 the hit is t = 4
+// exactly.
+Triangle across_at(float x) { return {{x, -1, -1}, {x, 3, -1}, {x, -1, 3}}; }
+
+Objects triangles_over(const std::vector<Triangle>& tris)
+{
+    Objects o;
+    o.triangles = tris.data();
+    o.triangle_count = static_cast<int>(tris.size());
+    o.tests = {SphereTest::precise, TriangleTest::watertight};
+    return o;
+}
+
+// The root split along x; node 1, its first child (the near one along +x), holds object 1 at
+// x = 4; node 2, the second, holds object 0, its box starting at x = `second_min_x`.
+Bvh tie_tree(const std::vector<Triangle>& tris, float second_min_x)
+{
+    const float second_max_x = tris[0].a.x;
+    Bvh b;
+    b.nodes = {{{std::min(4.0f, second_min_x), -1, -1}, 2, {std::max(4.0f, second_max_x), 3, 3}, 0, 0},
+               {{4, -1, -1}, 0, {4, 3, 3}, 1, 0},
+               {{second_min_x, -1, -1}, 1, {second_max_x, 3, 3}, 1, 0}};
+    b.object_index = {1, 0};
+    return b;
+}
+
+}  // namespace
+
+GRADED_TEST("bvh_query: a box the ray enters exactly at the best hit's t (or a float step before) is searched, for a lower-numbered object may tie there",
+            "10.4", 3)
+{
+    const Ray ray{{0, 0, 0}, {1, 0, 0}};
+    const float four = 4.0f, before = std::nextafter(four, 0.0f), after = std::nextafter(four, infinity);
+    const struct {
+        float second_min_x;  // where the ray enters the second leaf's box
+        float object0_x;     // the plane of object 0, in that leaf
+        int object;          // the answer
+        const char* why;
+    } cases[] = {{four, four, 0, "the second leaf's box is entered exactly at the best hit's t, 4, and holds object 0 "
+                                 "hit at t = 4 too: the tie goes to the lower number"},
+                 {before, four, 0, "the second leaf's box is entered one float step before t = 4, and holds object 0 "
+                                   "hit at t = 4: the tie goes to the lower number"},
+                 {after, after, 1, "the second leaf's box is entered one float step past t = 4, and object 0 in it is hit "
+                                   "there: farther than object 1's hit, it cannot win"}};
+    for (const auto& c : cases) {
+        const std::vector<Triangle> tris = {across_at(c.object0_x), across_at(four)};
+        const Objects objects = triangles_over(tris);
+        ObjectHit want;
+        REQUIRE(brute_force().closest(ray, {0.0f, infinity}, objects, want));
+        REQUIRE(want.object == c.object);  // the case's own set-up: brute force's answer
+        ObjectHit hit;
+        reset_counters();
+        const bool found = bvh_query(tie_tree(tris, c.second_min_x), ray, {0.0f, infinity}, objects, false, hit);
+        const std::uint64_t tests = counter(Counter::intersection_tests), nodes = counter(Counter::nodes_visited);
+        INFO("10.4: " << show(ray) << "; the near leaf holds object 1, hit at t = 4; " << c.why << ". Got "
+             << answer(found, hit) << " after " << tests << " tests and " << nodes << " nodes visited; expected "
+             << show(want) << (c.object == 0 ? " after 2 tests" : "") << ", 3 nodes visited (the root and both leaves, "
+             "each box tested): a box is searched up to and including the best hit's t");
+        CHECK(found);
+        CHECK(hit.object == want.object);
+        CHECK(hit.t == want.t);
+        CHECK(nodes == 3);
+        if (c.object == 0)
+            CHECK(tests == 2);
+    }
+}
+
+GRADED_TEST("bvh_query: a direction of 0 or -0 along the node's axis is not positive, so the second child is searched first",
+            "10.4", 2)
+{
+    // The two leaves of two_leaves(), the root marked as split along y: along y the ray's
+    // direction is +0 or -0, so the second child (sphere 1, at x = 5) comes first, and the first
+    // (sphere 0, at x = 1) is still entered, its box nearer than that hit.
+    Bvh b = two_leaves();
+    b.nodes[0].axis = 1;
+    for (const float zero : {0.0f, -0.0f}) {
+        const Ray ray{{-3, 0, 0}, {1, zero, 0}};
+        ObjectHit hit;
+        reset_counters();
+        const bool found = bvh_query(b, ray, {0.0f, infinity}, two_objects(), false, hit);
+        const std::uint64_t tests = counter(Counter::intersection_tests), nodes = counter(Counter::nodes_visited);
+        INFO("10.4: " << show(ray) << " (y component " << (std::signbit(zero) ? "-0" : "+0") << "), the root split along y, "
+             "its first child holding sphere 0 (x = 1), its second sphere 1 (x = 5): got " << answer(found, hit) << " after "
+             << tests << " tests and " << nodes << " nodes; expected sphere 0 at t = 3.5 after 2 tests and 3 nodes: the "
+             "first child goes first only when the direction along the node's axis is positive, so here the second is "
+             "searched first, and the first after it");
+        CHECK(found);
+        CHECK(hit.object == 0);
+        CHECK(tests == 2);
+        CHECK(nodes == 3);
+    }
+}
