@@ -105,7 +105,8 @@ sample2 stratified_sample(int k, int n, Rng& rng);
 //    glowing side, at a distance above 0, and its own feeler (light_blocked(scene.lit, hit, y_k, {})
 //    with the default settings) gets through. A sample exactly in the surface's plane, exactly in the
 //    light's plane, or at the point itself sends no feeler and adds nothing; so does a light facing
-//    away. Feelers are counted: at most one per sample.
+//    away. Feelers are counted: exactly one for each sample that passes the other three tests,
+//    none for the rest.
 //  - Every sample counts in N, the ones that add nothing included: a half-hidden light is half as
 //    bright. The estimate's mean over many calls is E's shading exactly, at any N. Never a NaN.
 // Precision: one call within a relative 1e-5 of the sum over its own samples; averages of many calls
