@@ -32,8 +32,9 @@ color local_shading(const PhongMaterial& m, const vec3& n, const vec3& to_eye, c
     // EXERCISE 04.1: Blinn-Phong for one light
     // Return what m reflects toward the eye from one light: Lambert's diffuse term plus Blinn's
     // halfway-vector highlight, times `light` (already divided by d^2). n, to_eye, to_light: unit.
-    // A light behind the surface gives black, highlight included; never a NaN, even with to_light
-    // exactly opposite to_eye. Lesson: "Computing the colour of the pixel (EXERCISE 04.1)"
+    // A light not above the surface (n.to_light <= 0) gives black, highlight included. With to_light
+    // exactly opposite to_eye there is no halfway vector and no highlight: the diffuse term alone,
+    // never a NaN. Lesson: "Computing the colour of the pixel (EXERCISE 04.1)"
     // Stuck? hint 04.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const float cos_light = glm::dot(n, to_light);
@@ -56,9 +57,10 @@ bool occluded(const LitScene& scene, const point3& origin, const point3& light, 
 {
     // EXERCISE 04.2: the any-hit shadow feeler
     // Return true when any sphere, triangle or cone of the scene lies between origin and the light:
-    // t strictly above t_min and short of the light by shadow_epsilon of its distance. Any occluder
-    // will do, so stop at the first; the grader counts your intersection tests (the counted ones the
-    // contract names). Lesson: "The shadow feeler (EXERCISE 04.2)"
+    // t strictly above t_min and strictly below the light's distance less shadow_epsilon of it. Any
+    // occluder will do, so stop at the first; the grader counts your intersection tests (the counted
+    // ones the contract names, each object asked at most once). Lesson: "The shadow feeler
+    // (EXERCISE 04.2)"
     // Stuck? hint 04.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const vec3 to_light = light - origin;
@@ -83,9 +85,10 @@ point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
 {
     // EXERCISE 04.3: Wachter and Binder's robust ray origin
     // Return p moved off its surface, to the side that dir leaves toward, by a step that scales
-    // with p: per coordinate, a count of units in the last place set by offset_int_scale and that
-    // coordinate of the normal, or the fixed offset_float_scale step where |p_i| < offset_origin.
-    // The grader checks the bits exactly. Lesson: "The robust offset (EXERCISE 04.3)"
+    // with p: per coordinate, exactly int(offset_int_scale n_i) floats (truncated toward 0), up or
+    // down as n_i's sign says, n turned to dir's side; or the fixed offset_float_scale step where
+    // |p_i| < offset_origin. The grader checks the bits exactly. Lesson: "The robust offset
+    // (EXERCISE 04.3)"
     // Stuck? hint 04.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const vec3 out = glm::dot(n, dir) < 0.0f ? -n : n;
@@ -109,9 +112,10 @@ point3 offset_ray_origin(const point3& p, const vec3& n, const vec3& dir)
 color shade(const LitScene& scene, const Ray& ray, const Hit& hit, const FeelerSettings& feelers)
 {
     // EXERCISE 04.4: the colour of a hit, every light with its feeler
-    // Return the ambient term plus your local_shading for each light that is on the side of the
-    // surface the eye sees and that light_blocked does not hide, its intensity falling off as 1 / d^2.
-    // Send a feeler only for a light that could light the point; a light at the point adds nothing.
+    // Return the ambient term plus your local_shading for each light that is strictly on the side of
+    // the surface the eye sees and that light_blocked does not hide, its intensity falling off as
+    // 1 / d^2. Send a feeler only for a light that could light the point (the grader counts them);
+    // a light in the surface's plane or at the point itself adds nothing.
     // Lesson: "Putting it together (EXERCISE 04.4)"
     // Stuck? hint 04.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN

@@ -58,7 +58,8 @@ point3 focal_point(const Camera& cam, const ThinLens& lens, const Ray& pinhole)
     // EXERCISE 06.2: where the pinhole ray meets the plane of sharp focus
     // Return the point of pinhole (from the eye, unit direction, in front of the camera) on the plane
     // lens.focus_distance in front of the eye measured along -w, parallel to the window: a slanted ray
-    // travels farther than that to reach it. Lesson: "The focal point: along -w, not along the ray
+    // travels farther than that to reach it. Exact to float's own rounding, even with the eye 2e5
+    // from the origin and a 179-degree view. Lesson: "The focal point: along -w, not along the ray
     // (EXERCISE 06.2)".
     // Stuck? hint 06.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
@@ -74,7 +75,8 @@ Ray thin_lens_ray(const Camera& cam, const ThinLens& lens, float x, float y, Rng
     // Return the ray, unit direction, from a uniform point of the lens (radius lens.aperture_radius
     // around the eye, in the camera's u, v plane) toward where the pixel's pinhole ray meets the plane
     // of focus; the lens point comes from rng's next two numbers, the first for x. An aperture of 0
-    // returns primary_ray's ray bit for bit and draws nothing. Lesson: "The thin-lens ray (EXERCISE 06.3)".
+    // (or -0) returns primary_ray's ray bit for bit and draws nothing; any other, however small, is a
+    // lens. Lesson: "The thin-lens ray (EXERCISE 06.3)".
     // Stuck? hint 06.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const Ray pinhole = primary_ray(cam, x, y);

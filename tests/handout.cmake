@@ -1,10 +1,15 @@
 # Writes the kit as handed out to students: without solutions/ and without the mutants (whose
-# lines are the solutions'), with each chapter's hints cut to the tiers the course allows.
+# lines are the solutions'), with each chapter's hints cut to the tiers the course allows and its
+# contracts at the level the course chooses.
 #
-#   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] -P tests/handout.cmake
+#   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] [-D CONTRACTS=behaviour|detailed] -P tests/handout.cmake
 #
 # HINT_TIERS (default 3, all): the tiers of every chapters/NN_name/hints.md kept, 1 the idea, 2 the
-# trap, 3 the walk-through; 0 leaves the hints out. The grader and the programs build the same.
+# trap, 3 the walk-through; 0 leaves the hints out.
+# CONTRACTS (default behaviour): each exercise's contract says what its function returns, and may
+# carry a `// DETAIL BEGIN` ... `// DETAIL END` block of steps under it (tests/contract_detail.cmake).
+# `behaviour` drops those blocks from every header and exercise; `detailed`, for an introductory
+# course, keeps the steps and drops only the marker lines. The grader and the programs build the same.
 get_filename_component(kit "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT OUT)
   message(FATAL_ERROR "handout: say where to write it: -D OUT=<folder>")
@@ -15,6 +20,13 @@ endif()
 if(NOT HINT_TIERS MATCHES "^[0-3]$")
   message(FATAL_ERROR "handout: HINT_TIERS is 0, 1, 2 or 3 (the tiers kept), not '${HINT_TIERS}'")
 endif()
+if(NOT DEFINED CONTRACTS)
+  set(CONTRACTS behaviour)
+endif()
+if(NOT CONTRACTS MATCHES "^(behaviour|detailed)$")
+  message(FATAL_ERROR "handout: CONTRACTS is behaviour (what each function returns) or detailed (the steps too), not '${CONTRACTS}'")
+endif()
+include("${CMAKE_CURRENT_LIST_DIR}/contract_detail.cmake")
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
 foreach(entry CMakeLists.txt CMakePresets.json README.md .ci .devcontainer chapters common exercises tests)
@@ -40,4 +52,23 @@ foreach(hints IN LISTS hint_files)
   endif()
   file(WRITE "${hints}" "${text}")
 endforeach()
-message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints: ${OUT}")
+# The contracts at the chosen level: the headers of every chapter, and the exercises' comments.
+file(GLOB_RECURSE contract_files "${OUT}/chapters/*.hpp" "${OUT}/exercises/*.cpp")
+set(detail_blocks 0)
+foreach(contract IN LISTS contract_files)
+  file(READ "${contract}" text)
+  string(FIND "${text}" "// DETAIL " marked)
+  if(marked EQUAL -1)
+    continue()
+  endif()
+  file(RELATIVE_PATH where "${OUT}" "${contract}")
+  contract_detail("${text}" "${CONTRACTS}" "${where}" text blocks)
+  file(WRITE "${contract}" "${text}")
+  math(EXPR detail_blocks "${detail_blocks} + ${blocks}")
+endforeach()
+if(CONTRACTS STREQUAL "detailed")
+  set(done "kept")
+else()
+  set(done "dropped")
+endif()
+message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints and ${CONTRACTS} contracts (${detail_blocks} step blocks ${done}): ${OUT}")

@@ -1,13 +1,56 @@
-# The handout switch does what it says: with HINT_TIERS=2 every exercise keeps tiers 1 and 2 and
-# loses the walk-through; with 0 no hint is left; neither holds a solution or a mutant, and the
-# handout configures.
+# The handout switches do what they say. HINT_TIERS=2 keeps tiers 1 and 2 of every exercise's hints
+# and loses the walk-through; 0 leaves no hint. CONTRACTS=behaviour (the default) drops every
+# `// DETAIL BEGIN` ... `// DETAIL END` block of steps from the contracts, markers and all; detailed
+# keeps the steps and drops only the markers. No handout holds a solution or a mutant, and a
+# handout configures. Malformed markers stop the handout rather than hand out the steps.
 #   cmake -D KIT=<the kit> -D HINT=<the hint program> -D WORK=<a scratch folder> -P handout_test.cmake
-foreach(tiers 2 0)
+cmake_minimum_required(VERSION 3.22)
+
+# The contracts as each level should leave them, worked out here with one regular expression per
+# level (tests/contract_detail.cmake walks the markers instead). A line of a block is any comment
+# line but the END marker (strictly: one not starting `// DET`).
+set(block_line "[ \t]*//(\n|[^ \n][^\n]*\n| \n| [^D\n][^\n]*\n| D\n| D[^E\n][^\n]*\n| DE\n| DE[^T\n][^\n]*\n)")
+function(expected_contract text level out)
+  if(level STREQUAL "detailed")
+    string(REGEX REPLACE "[ \t]*// DETAIL (BEGIN|END)[^\n]*\n" "" text "${text}")
+  else()
+    string(REGEX REPLACE "[ \t]*// DETAIL BEGIN[^\n]*\n(${block_line})*[ \t]*// DETAIL END[^\n]*\n" "" text "${text}")
+  endif()
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+file(GLOB_RECURSE kit_contracts RELATIVE "${KIT}" "${KIT}/chapters/*.hpp" "${KIT}/exercises/*.cpp")
+set(marked_contracts "")
+set(kit_blocks 0)
+foreach(contract IN LISTS kit_contracts)
+  file(READ "${KIT}/${contract}" text)
+  string(REGEX MATCHALL "// DETAIL BEGIN" begins "${text}")
+  list(LENGTH begins n)
+  if(n GREATER 0)
+    list(APPEND marked_contracts "${contract}")
+    math(EXPR kit_blocks "${kit_blocks} + ${n}")
+  endif()
+endforeach()
+if(kit_blocks EQUAL 0)
+  message(FATAL_ERROR "no contract of ${KIT} has a `// DETAIL BEGIN` block: this test would prove nothing")
+endif()
+
+# Each setting: the hint tiers, and the contracts asked for (none: the default).
+foreach(setting "2:" "0:detailed")
+  string(REPLACE ":" ";" setting "${setting}")
+  list(GET setting 0 tiers)
+  list(GET setting 1 contracts)
+  set(contracts_flag "")
+  set(level "behaviour")
+  if(contracts)
+    set(contracts_flag -D "CONTRACTS=${contracts}")
+    set(level "${contracts}")
+  endif()
   set(out "${WORK}/tiers_${tiers}")
-  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" -P "${KIT}/tests/handout.cmake"
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" ${contracts_flag} -P "${KIT}/tests/handout.cmake"
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "handout.cmake failed with HINT_TIERS=${tiers}:\n${log}")
+    message(FATAL_ERROR "handout.cmake failed with HINT_TIERS=${tiers} ${contracts_flag}:\n${log}")
   endif()
   if(EXISTS "${out}/solutions" OR EXISTS "${out}/tests/mutants" OR NOT EXISTS "${out}/exercises")
     message(FATAL_ERROR "the handout in ${out} should have exercises/ and neither solutions/ nor tests/mutants/")
@@ -17,7 +60,78 @@ foreach(tiers 2 0)
     message(FATAL_ERROR "the handout with HINT_TIERS=${tiers} does not have ${tiers} tier(s) for every exercise:\n${log}")
   endif()
   message(STATUS "HINT_TIERS=${tiers}: ${log}")
+
+  # The contracts: no marker left anywhere, and each marked file exactly as its level says.
+  file(GLOB_RECURSE handed_out "${out}/chapters/*" "${out}/exercises/*")
+  foreach(file IN LISTS handed_out)
+    file(STRINGS "${file}" markers REGEX "// DETAIL (BEGIN|END)")
+    if(markers)
+      message(FATAL_ERROR "CONTRACTS=${level}: ${file} still holds DETAIL markers:\n${markers}")
+    endif()
+  endforeach()
+  foreach(contract IN LISTS marked_contracts)
+    file(READ "${KIT}/${contract}" source)
+    file(READ "${out}/${contract}" got)
+    expected_contract("${source}" "${level}" want)
+    if(NOT got STREQUAL want)
+      message(FATAL_ERROR "CONTRACTS=${level}: ${out}/${contract} is not ${KIT}/${contract} with "
+        "${level} contracts (${level} keeps the steps and drops the markers; behaviour drops both):\n${got}")
+    endif()
+    if(level STREQUAL "behaviour" AND got STREQUAL source)
+      message(FATAL_ERROR "CONTRACTS=behaviour left ${contract} as it is")
+    endif()
+  endforeach()
+  if(level STREQUAL "detailed")
+    set(done "kept")
+  else()
+    set(done "dropped")
+  endif()
+  string(REPLACE ";" ", " files "${marked_contracts}")
+  message(STATUS "CONTRACTS=${level}: no marker left; the ${kit_blocks} step block(s) ${done} (${files})")
 endforeach()
+
+# A setting that is neither level stops the handout.
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${WORK}/bogus" -D CONTRACTS=steps -P "${KIT}/tests/handout.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "CONTRACTS is behaviour")
+  message(FATAL_ERROR "handout.cmake accepted CONTRACTS=steps:\n${log}")
+endif()
+
+# Malformed markers stop the handout, the file untouched; a well-formed one is cut as it says.
+set(good "// EXERCISE 99.1: what it returns.\n  // DETAIL BEGIN: how\n  // step 1, then step 2\n//\n  // DETAIL END\nvoid f() {}\n")
+set(cases
+  "good|${good}"
+  "no_end|// EXERCISE 99.1: what.\n// DETAIL BEGIN\n// a step\nvoid f() {}\n"
+  "no_begin|// EXERCISE 99.1: what.\n// a step\n// DETAIL END\nvoid f() {}\n"
+  "code_inside|// EXERCISE 99.1: what.\n// DETAIL BEGIN\nvoid f() {}\n// DETAIL END\n"
+  "nested|// DETAIL BEGIN\n// DETAIL BEGIN\n// DETAIL END\nvoid f() {}\n"
+  "after_code|void f() {}  // DETAIL BEGIN\n// DETAIL END\n")
+foreach(case IN LISTS cases)
+  string(FIND "${case}" "|" bar)
+  string(SUBSTRING "${case}" 0 ${bar} name)
+  math(EXPR bar "${bar} + 1")
+  string(SUBSTRING "${case}" ${bar} -1 text)
+  set(file "${WORK}/markers/${name}.hpp")
+  file(WRITE "${file}" "${text}")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "FILE=${file}" -P "${KIT}/tests/contract_detail.cmake"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+  file(READ "${file}" after)
+  if(name STREQUAL "good")
+    if(NOT rc EQUAL 0 OR NOT after STREQUAL "// EXERCISE 99.1: what it returns.\nvoid f() {}\n")
+      message(FATAL_ERROR "contract_detail.cmake cut a well-formed block wrongly (exit ${rc}):\n${after}\n${log}")
+    endif()
+  elseif(rc EQUAL 0 OR NOT after STREQUAL text)
+    message(FATAL_ERROR "contract_detail.cmake accepted malformed markers (${name}), or changed the file:\n${text}\n${log}")
+  endif()
+endforeach()
+file(WRITE "${WORK}/markers/good.hpp" "${good}")
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "FILE=${WORK}/markers/good.hpp" -D CONTRACTS=detailed -P "${KIT}/tests/contract_detail.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+file(READ "${WORK}/markers/good.hpp" after)
+if(NOT rc EQUAL 0 OR NOT after STREQUAL "// EXERCISE 99.1: what it returns.\n  // step 1, then step 2\n//\nvoid f() {}\n")
+  message(FATAL_ERROR "contract_detail.cmake with CONTRACTS=detailed should keep the steps and drop the markers (exit ${rc}):\n${after}\n${log}")
+endif()
+
 # A handout configures as it is (no target may need a solution or a mutant).
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${WORK}/tiers_0" -B "${WORK}/tiers_0/build"
   RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
