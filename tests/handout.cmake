@@ -35,6 +35,8 @@ foreach(entry CMakeLists.txt CMakePresets.json README.md .ci .devcontainer chapt
   endif()
 endforeach()
 file(REMOVE_RECURSE "${OUT}/tests/mutants")
+# The machine-made mutants' list of equivalent ones quotes the solutions' lines too.
+file(REMOVE_RECURSE "${OUT}/tests/mutation")
 file(GLOB hint_files "${OUT}/chapters/*/hints.md")
 foreach(hints IN LISTS hint_files)
   if(HINT_TIERS EQUAL 0)
