@@ -191,10 +191,17 @@ public:
         if (scene_.lights.empty())
             fail(lex_.last_line(), "no lights ('l'): every object would be black");
         warn_if_coarse();
+        if (scene_.skipped_polygons > skipped_named)
+            scene_.warnings.push_back(name_ + ": " + std::to_string(scene_.skipped_polygons) +
+                                      " polygons and patches with no area skipped in all (the first " +
+                                      std::to_string(skipped_named) + " named above)");
         return std::move(scene_);
     }
 
 private:
+    // How many skipped polygons the warnings name one by one before they only count them.
+    static constexpr int skipped_named = 3;
+
     // Why 2^14 float steps: a coordinate is rounded to the step between floats at its size (2^-23 to
     // 2^-24 of it), so a scene far from the origin is drawn on a lattice of that step. Fewer than
     // 2^14 steps across the scene and its shapes are placed to within 1/16384 of it: round shapes
@@ -221,12 +228,16 @@ private:
         const float far = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                     std::abs(hi.z)});
         const float step = std::nextafter(far, std::numeric_limits<float>::infinity()) - far;
-        if (!(size > 0.0f) || !(size < 0x1p14f * step))
+        if (!(size < 0x1p14f * step))
             return;
         std::ostringstream why;
-        why << name_ << ": the scene is " << size << " across but lies " << far << " from the origin, where float's step is "
-            << step << ": only " << static_cast<long long>(size / step)
-            << " steps across it, so its shapes are rounded visibly (facets, flickering shadows); move it toward the origin";
+        if (size == 0.0f)
+            why << name_ << ": every object rounds to one point, " << lo.x << " " << lo.y << " " << lo.z
+                << ", where float's step is " << step << ": the scene draws as one dot; move it toward the origin";
+        else
+            why << name_ << ": the scene is " << size << " across but lies " << far << " from the origin, where float's step is "
+                << step << ": only " << static_cast<long long>(size / step)
+                << " steps across it, so its shapes are rounded visibly (facets, flickering shadows); move it toward the origin";
         scene_.warnings.push_back(why.str());
     }
 
@@ -481,8 +492,11 @@ private:
         try {
             cut = triangulate_polygon(vertices);
         } catch (const DegeneratePolygon& e) {
-            scene_.warnings.push_back(name_ + ":" + std::to_string(command.line) + ": " + entity + ": " + e.what() +
-                                      ": skipped");
+            // The first few named, the rest counted (warn_of_skipped): a file of thousands of slivers
+            // is one screen, not thousands of lines.
+            if (scene_.skipped_polygons < skipped_named)
+                scene_.warnings.push_back(name_ + ":" + std::to_string(command.line) + ": " + entity + ": " + e.what() +
+                                          ": skipped");
             ++scene_.skipped_polygons;
             return;
         } catch (const InputError& e) {

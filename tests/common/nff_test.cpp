@@ -219,6 +219,19 @@ TEST_CASE("a polygon or patch with no area is skipped with a warning naming its 
     CHECK_THROWS_WITH(parse(lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n"), "t.nff:13: no objects (s, p, pp or c): nothing to render");
 }
 
+TEST_CASE("a file of a thousand polygons with no area warns of the first three and counts the rest in one line", "[common]")
+{
+    std::string text = lit;
+    for (int k = 0; k < 1000; ++k)
+        text += "p 3\n0 0 0\n1 1 1\n2 2 2\n";
+    const NffScene s = parse(text + "s 0 0 0 1\n");
+    CHECK(s.skipped_polygons == 1000);
+    REQUIRE(s.warnings.size() == 4);
+    CHECK(s.warnings[0] == "t.nff:10: polygon: its vertices all lie on one line (no area): skipped");
+    CHECK(s.warnings[2] == "t.nff:18: polygon: its vertices all lie on one line (no area): skipped");
+    CHECK(s.warnings[3] == "t.nff: 1000 polygons and patches with no area skipped in all (the first 3 named above)");
+}
+
 TEST_CASE("a scene only a few hundred float steps across at its distance from the origin is warned of, once", "[common]")
 {
     // 100 across at 1e7, where floats are 1 apart: a hundred steps across the scene.
@@ -229,6 +242,15 @@ TEST_CASE("a scene only a few hundred float steps across at its distance from th
     // The same scene at 1e3 (floats 6e-5 apart), and a tiny one at the origin: no warning.
     CHECK(parse(lit + "s 1000 1000 1000 2\ns 1096 1000 1000 2\n").warnings.empty());
     CHECK(parse(lit + "s 0 0 0 1e-12\n").warnings.empty());
+}
+
+TEST_CASE("a scene that rounding collapses to one point is warned of", "[common]")
+{
+    // 0.3 across at 1e8, where floats are 8 apart: every sphere's centre and extent round to one point.
+    const NffScene dot = parse(lit + "s 100000000 100000000 100000000 0.3\ns 100000001 100000002 100000000 0.3\n");
+    REQUIRE(dot.warnings.size() == 1);
+    CHECK_THAT(dot.warnings[0], rt::grader::contains_text("t.nff: every object rounds to one point, 1e+08 1e+08 1e+08, "
+                                                          "where float's step is 8: the scene draws as one dot"));
 }
 
 TEST_CASE("every kind of bad NFF file is answered with FILE:LINE: what is wrong", "[common]")
