@@ -31,6 +31,7 @@
 
 #include "common/notice.hpp"
 #include "common/stub.hpp"
+#include "common/words.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -146,8 +147,7 @@ public:
         // An exercise's case (not a picture or agreement case) points to the hint for its trap.
         if (!current_.passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
             current_.output += "the trap this case checks: ./build/grade/hint " + current_.number + " 2\n";
-        for (const std::string& exercise : rt::stubs_that_ran())
-            current_.stubs += (current_.stubs.empty() ? "" : " ") + exercise;
+        current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
         if (current_.number.empty())
             return;
         results.push_back(current_);

@@ -1,5 +1,7 @@
 #include "tests/grader/summary.hpp"
 
+#include "common/words.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <map>
@@ -27,11 +29,7 @@ bool ran_stub(const CaseResult& r, const std::string& exercise)
 std::string in_words(const std::string& list)
 {
     std::istringstream words(list);
-    std::vector<std::string> w{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
-    std::string out;
-    for (size_t k = 0; k < w.size(); ++k)
-        out += (k == 0 ? "" : k + 1 == w.size() ? " and " : ", ") + w[k];
-    return out;
+    return join_words({std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()}, ", ", " and ");
 }
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
@@ -138,10 +136,13 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
 std::vector<ChapterMark> chapter_marks(const std::vector<CaseResult>& summarized)
 {
     std::vector<ChapterMark> marks;
+    std::vector<std::vector<std::string>> words;  // each chapter's marks
     for (const CaseResult& r : summarized) {
         const std::string nn = chapter_of(r.number);
-        if (marks.empty() || marks.back().chapter != nn)
+        if (marks.empty() || marks.back().chapter != nn) {
             marks.push_back(ChapterMark{nn, 0, 0, ""});
+            words.emplace_back();
+        }
         ChapterMark& m = marks.back();
         m.score += r.score;
         m.max_score += r.max_score;
@@ -159,8 +160,10 @@ std::vector<ChapterMark> chapter_marks(const std::vector<CaseResult>& summarized
         else if (starts_with(r.output, crashed_mark))
             mark = "crashed " + r.number;
         if (!mark.empty())
-            m.marks += (m.marks.empty() ? "" : ", ") + mark;
+            words.back().push_back(mark);
     }
+    for (size_t k = 0; k < marks.size(); ++k)
+        marks[k].marks = join_words(words[k], ", ");
     return marks;
 }
 
