@@ -4,11 +4,14 @@
 
 #include "tests/grader/catch.hpp"
 
+#include <cstdio>
+#include <fstream>
 #include <numeric>
 
 namespace {
 
 using rt::grader::CaseResult;
+using rt::grader::CaseStatus;
 
 CaseResult graded(const std::string& number, int max, bool passed, const std::string& stubs = "",
                   const std::string& output = "")
@@ -18,9 +21,17 @@ CaseResult graded(const std::string& number, int max, bool passed, const std::st
     r.name = "case " + number;
     r.max_score = max;
     r.score = passed ? max : 0;
-    r.passed = passed;
+    r.status = passed ? CaseStatus::passed : CaseStatus::failed;
     r.stubs = stubs;
     r.output = output;
+    return r;
+}
+
+// A failed case with the status the grader gave it.
+CaseResult ended(const std::string& number, CaseStatus status, const std::string& output)
+{
+    CaseResult r = graded(number, 1, false, "", output);
+    r.status = status;
     return r;
 }
 
@@ -57,6 +68,7 @@ TEST_CASE("a chapter that did not compile is one line with the compiler's errors
 {
     CaseResult build = graded("02.build", 0, false, "", "02_spheres_triangles.cpp:3:1: error: expected ';'");
     build.name = "chapter 02 does not compile";
+    build.status = CaseStatus::does_not_compile;
     const std::vector<CaseResult> cases = {graded("01.1", 4, true), graded("02.1", 6, false), graded("02.2", 7, false), build};
     const auto summary = rt::grader::summarize(cases);
     INFO(show(summary));
@@ -77,7 +89,7 @@ TEST_CASE("an exercise still its stub is one line; a case that waits for another
         graded("07.2", 4, false, "07.2", "the walk visits []"),
         graded("07.3", 5, false, "07.2", "wrong cell"),
         graded("07.4", 6, false, "", "the cell of (1, 2, 3) is 4; expected 5"),
-        graded("07.5", 1, false, "", std::string(rt::grader::stopped_mark) + "the case used more than 10 s of CPU time"),
+        ended("07.5", CaseStatus::stopped, "stopped: the case used more than 10 s of CPU time"),
     };
     const auto summary = rt::grader::summarize(cases);
     INFO(show(summary));
@@ -88,6 +100,45 @@ TEST_CASE("an exercise still its stub is one line; a case that waits for another
     CHECK(summary[3].output == cases[4].output);  // a plain failure keeps what went in and came out
     CHECK(maximum(summary) == maximum(cases));
     CHECK(rt::grader::chapter_marks(summary)[0].marks == "stub 07.2, stopped 07.5");
+}
+
+TEST_CASE("the class page marks a case by its status, whatever its message says", "[grader]")
+{
+    // A student's own message may begin like the grader's: only the status says crashed.
+    const std::vector<CaseResult> cases = {ended("04.1", CaseStatus::failed, "crashed: the light is inside the sphere"),
+                                           ended("04.2", CaseStatus::crashed, "the case crashed (signal 11)")};
+    CHECK(rt::grader::chapter_marks(rt::grader::summarize(cases))[0].marks == "crashed 04.2");
+}
+
+TEST_CASE("a results file keeps each case's status, and a file from before the status still reads", "[grader]")
+{
+    const std::string path = "grade_summary_test.results";
+    std::vector<CaseResult> cases = {graded("07.1", 2, true), ended("07.2", CaseStatus::crashed, "crashed: signal 11"),
+                                     ended("07.3", CaseStatus::stopped, "stopped: over 10 s")};
+    cases[1].stubs = "07.1";
+    REQUIRE(rt::grader::write_results(path, cases));
+    std::vector<CaseResult> read;
+    REQUIRE(rt::grader::read_results(path, read));
+    REQUIRE(read.size() == 3);
+    for (size_t k = 0; k < 3; ++k) {
+        CHECK(read[k].status == cases[k].status);
+        CHECK(read[k].stubs == cases[k].stubs);
+        CHECK(read[k].output == cases[k].output);
+    }
+    // The six fields of an older grader, and grade.cmake's older build line of five.
+    {
+        std::ofstream old(path);
+        old << "07.1\t2\t2\tcase 07.1\t\t\n07.2\t3\t0\tcase 07.2\tfailed: ...\t07.2\n"
+               "08.build\t0\t0\tchapter 08 does not compile\terror: expected ';'\n";
+    }
+    read.clear();
+    REQUIRE(rt::grader::read_results(path, read));
+    REQUIRE(read.size() == 3);
+    CHECK(read[0].status == CaseStatus::passed);
+    CHECK(read[1].status == CaseStatus::failed);
+    CHECK(read[1].stubs == "07.2");
+    CHECK(read[2].status == CaseStatus::does_not_compile);
+    std::remove(path.c_str());
 }
 
 TEST_CASE("a failing case whose own stub ran in only some of its cases still reads as the stub", "[grader]")

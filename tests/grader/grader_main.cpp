@@ -55,6 +55,10 @@ const Catch::TestCaseInfo& info_of(const Catch::TestCase& test) { return test; }
 const std::string& text_of(const std::string& tag) { return tag; }
 #endif
 
+// How the output of a case that crashed or was stopped begins (its status says so too).
+constexpr const char* stopped_words = "stopped: ";
+constexpr const char* crashed_words = "crashed: ";
+
 // Exit status of a case's process stopped by its CPU limit (the `timeout` command's).
 constexpr int exit_cpu_limit = 124;
 
@@ -112,7 +116,7 @@ public:
         if (a.getResultType() == Catch::ResultWas::FatalErrorCondition) {
             // The student's code crashed: what the case was working on, if it said, and where.
             std::ostringstream out;
-            out << crashed_mark << a.getMessage() << '\n';
+            out << crashed_words << a.getMessage() << '\n';
             if (working_on_now && *working_on_now)
                 out << "while working on " << (*working_on_now)() << '\n';
             for (const Catch::MessageInfo& m : stats.infoMessages)
@@ -120,6 +124,7 @@ public:
                     out << m.message << '\n';
             out << "  after the check at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
             current_.output = out.str() + current_.output;
+            current_.status = CaseStatus::crashed;
             return;
         }
         // A case's description of its input (INFO) is said once for the checks that fail on it.
@@ -140,12 +145,14 @@ public:
 
     void testCaseEnded(const Catch::TestCaseStats& stats) override
     {
-        current_.passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0;
-        current_.score = current_.passed ? current_.max_score : 0;
+        const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0;
+        if (passed)
+            current_.status = CaseStatus::passed;
+        current_.score = passed ? current_.max_score : 0;
         if (stats.totals.assertions.passed == 0 && stats.totals.assertions.failed == 0)
             current_.output += "the test checked nothing: it earns no points\n";
         // An exercise's case (not a picture or agreement case) points to the hint for its trap.
-        if (!current_.passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
+        if (!passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
             current_.output += "the trap this case checks: ./build/grade/hint " + current_.number + " 2\n";
         current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
         if (current_.number.empty())
@@ -236,12 +243,14 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
         const std::string limit = std::to_string(cpu_limit);
         switch (status.end) {
         case ChildStatus::End::exited:
+            lost.status = status.code == exit_cpu_limit ? CaseStatus::stopped : CaseStatus::crashed;
             lost.output = status.code == exit_cpu_limit
-                              ? stopped_mark + ("the case used more than " + limit + " s of CPU time: an endless loop?")
-                              : crashed_mark + ("the case ended without reporting (exit status " + std::to_string(status.code) + ")");
+                              ? stopped_words + ("the case used more than " + limit + " s of CPU time: an endless loop?")
+                              : crashed_words + ("the case ended without reporting (exit status " + std::to_string(status.code) + ")");
             break;
         case ChildStatus::End::crashed:
-            lost.output = crashed_mark + std::string("the case crashed (") +
+            lost.status = CaseStatus::crashed;
+            lost.output = crashed_words + std::string("the case crashed (") +
 #ifdef _WIN32
                           std::string("exception code ") + std::to_string(static_cast<unsigned>(status.code)) +
 #else
@@ -250,7 +259,8 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
                           ") before it could report";
             break;
         case ChildStatus::End::stopped:
-            lost.output = stopped_mark + ("the case was still running after " +
+            lost.status = CaseStatus::stopped;
+            lost.output = stopped_words + ("the case was still running after " +
                                           std::to_string(static_cast<int>(wall_backstop_factor * cpu_limit)) +
                                           " s on the clock: is it waiting for something?");
             break;

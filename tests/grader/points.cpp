@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -59,7 +60,21 @@ std::string escape_json(const std::string& s)
     return out.str();
 }
 
+// The results file's words for CaseStatus, in its order.
+constexpr const char* status_words[] = {"passed", "failed", "crashed", "stopped", "stub",
+                                        "waits_for_stub", "untouched", "does_not_compile", "no_file"};
+
 }  // namespace
+
+const char* status_word(CaseStatus status) { return status_words[static_cast<int>(status)]; }
+
+std::optional<CaseStatus> status_of_word(const std::string& word)
+{
+    for (int k = 0; k < static_cast<int>(std::size(status_words)); ++k)
+        if (word == status_words[k])
+            return static_cast<CaseStatus>(k);
+    return std::nullopt;
+}
 
 std::string escape_xml(const std::string& s)
 {
@@ -76,9 +91,9 @@ std::string escape_xml(const std::string& s)
 
 void print_case(std::ostream& out, const CaseResult& r)
 {
-    out << (r.passed ? "  ok    " : "  FAIL  ") << std::left << std::setw(6) << r.number << std::right << std::setw(2)
+    out << (r.passed() ? "  ok    " : "  FAIL  ") << std::left << std::setw(6) << r.number << std::right << std::setw(2)
         << r.score << '/' << r.max_score << "  " << r.name << '\n';
-    if (r.passed)
+    if (r.passed())
         return;
     std::istringstream lines(r.output);
     std::string line;
@@ -105,7 +120,7 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
             out << "    " << std::left << std::setw(8) << number << std::right << std::setw(13) << points.first
                 << " / " << points.second << '\n';
             for (const CaseResult& r : results)
-                if (r.number == number && !r.passed)
+                if (r.number == number && !r.passed())
                     out << "      lost " << r.max_score << ": " << r.name << '\n';
         }
     }
@@ -175,7 +190,7 @@ std::string tidy_output(std::string output)
 static void write_line(std::ostream& out, const CaseResult& r)
 {
     out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
-        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\n';
+        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\t' << status_word(r.status) << '\n';
 }
 
 bool write_results(const std::string& path, const std::vector<CaseResult>& results)
@@ -216,10 +231,18 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
         r.number = fields[0];
         r.max_score = std::stoi(fields[1]);
         r.score = std::stoi(fields[2]);
-        r.passed = r.score == r.max_score;
         r.name = fields[3];
         r.output = fields.size() > 4 ? fields[4] : "";
         r.stubs = fields.size() > 5 ? fields[5] : "";
+        const std::optional<CaseStatus> status = fields.size() > 6 ? status_of_word(fields[6]) : std::nullopt;
+        if (fields.size() > 6 && !status)
+            return false;
+        // (A line from before the status field: what its score and number say.)
+        const bool build_line = r.number.size() > 2 && r.number.compare(2, std::string::npos, ".build") == 0;
+        r.status = status                        ? *status
+                   : build_line                  ? CaseStatus::does_not_compile
+                   : r.score == r.max_score      ? CaseStatus::passed
+                                                 : CaseStatus::failed;
         results.push_back(r);
     }
     return true;
@@ -238,7 +261,7 @@ bool write_gradescope_json(const std::string& path, const std::vector<CaseResult
         out << (k ? "," : "") << "\n    {\"name\": \"" << escape_json(r.name) << "\", \"number\": \""
             << escape_json(r.number) << "\", \"score\": " << r.score << ", \"max_score\": " << r.max_score
             << ", \"output\": \"";
-        const std::string html = as_html && !r.passed ? as_html(r) : "";
+        const std::string html = as_html && !r.passed() ? as_html(r) : "";
         if (html.empty())
             out << escape_json(r.output) << "\"}";
         else
@@ -258,13 +281,13 @@ bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& res
     for (const auto& [chapter, cases] : by_chapter) {
         int failures = 0;
         for (const CaseResult* r : cases)
-            failures += r->passed ? 0 : 1;
+            failures += r->passed() ? 0 : 1;
         out << "  <testsuite name=\"chapter " << chapter << "\" tests=\"" << cases.size() << "\" failures=\""
             << failures << "\">\n";
         for (const CaseResult* r : cases) {
             out << "    <testcase classname=\"ch" << chapter << '.' << escape_xml(r->number) << "\" name=\""
                 << escape_xml(r->name) << "\">";
-            if (!r->passed)
+            if (!r->passed())
                 out << "<failure message=\"lost " << r->max_score << " points\">" << escape_xml(r->output)
                     << "</failure>";
             out << "</testcase>\n";
@@ -290,17 +313,17 @@ bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results
     if (expect == "full") {
         ok = score == max_score;
         for (const CaseResult& r : results)
-            if (!r.passed)
+            if (!r.passed())
                 out << "grader self-check: the solution fails " << r.number << " '" << r.name << "'\n";
     } else if (expect == "zero") {
         ok = score == 0;
         for (const CaseResult& r : results)
-            if (r.passed)
+            if (r.passed())
                 out << "grader self-check: the untouched stub passes " << r.number << " '" << r.name
                     << "': that case cannot tell a stub from an answer\n";
         // The report says "still the handed-out stub" only of a case that saw a stub run.
         for (const CaseResult& r : results)
-            if (!r.passed && r.stubs.empty()) {
+            if (!r.passed() && r.stubs.empty()) {
                 ok = false;
                 out << "grader self-check: " << r.number << " '" << r.name
                     << "' fails on the stubs but ran none of them: the report cannot say it waits for a stub\n";
