@@ -4,6 +4,7 @@
 
 #include "tests/grader/catch.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <numeric>
@@ -151,4 +152,20 @@ TEST_CASE("a failing case whose own stub ran in only some of its cases still rea
     REQUIRE(summary.size() == 2);
     CHECK(summary[0].name == "07.2 is still the handed-out stub");
     CHECK(summary[0].max_score == 7);
+}
+
+TEST_CASE("a case's output is cut to about a screenful, saying how much more there was, and cut once", "[grader]")
+{
+    std::string output;
+    for (int k = 0; k < 500; ++k)
+        output += "failed: CHECK( walked == crossed ) for ray " + std::to_string(k) + "\n";
+    const std::string cut = rt::grader::tidy_output(output);
+    CHECK(std::count(cut.begin(), cut.end(), '\n') + 1 == static_cast<long>(rt::grader::case_output_lines));
+    CHECK_THAT(cut, rt::grader::contains_text("... and 469 more lines"));
+    CHECK(rt::grader::tidy_output(cut) == cut);
+    const std::string one_long_line(10000, 'x');
+    const std::string cut_long = rt::grader::tidy_output(one_long_line);
+    CHECK(cut_long.size() < 4000);
+    CHECK(rt::grader::tidy_output(cut_long) == cut_long);
+    CHECK(rt::grader::tidy_output("a\nb\n") == "a\nb\n");
 }

@@ -13,6 +13,12 @@
 //   --case-process S      (what the grader gives each case's process) run the one case named, append
 //                         its result to --results, and stop after S seconds of CPU time
 //
+// Each case is said as the student reads it: its input once, its first failed checks (about a
+// screenful), then how many more failed. Without --case-timeout too, Catch2's own report goes
+// nowhere when every case selected is graded, unless a reporter, an output file or a listing is
+// asked for on the command line. The kit's notices (common/notice.hpp) are off: they speak of the
+// test scenes, not of the student's work.
+//
 // Catch2 v2 and v3 differ in the few interfaces a runner with a listener uses; RT_CATCH2_V3 picks.
 #ifdef RT_CATCH2_V3
 #include <catch2/catch_all.hpp>
@@ -37,6 +43,7 @@
 #include <cctype>
 #include <iostream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace rt::grader {
@@ -70,6 +77,23 @@ constexpr double wall_backstop_factor = 10.0;
 std::vector<CaseResult> results;
 std::string results_path;  // appended to after every case, so a crash still leaves the cases before it
 
+// Graded in this process (no --case-timeout), each case is said as it ends, as a grading run says
+// it, in place of Catch2's own report (which repeats every failed check in full).
+bool say_cases_as_they_end = false;
+
+// A case as the console says it: as graded, or, for an exercise still its stub, one line for all of
+// its cases (`last_stub`: the exercise said last).
+void say_case(std::ostream& out, const CaseResult& r, std::string& last_stub)
+{
+    const std::string verdict = stub_verdict(r);
+    if (verdict.empty())
+        print_case(out, r);
+    else if (r.number != last_stub)
+        out << "  STUB  " << r.number << "  " << verdict << '\n';
+    if (!verdict.empty())
+        last_stub = r.number;
+}
+
 // "[ch01][01.2][2pt]": the number is the tag of form NN.k, the points the tag ending in "pt".
 void read_tags(const Catch::TestCaseInfo& info, CaseResult& r)
 {
@@ -92,7 +116,8 @@ public:
     void testCaseStarting(const Catch::TestCaseInfo& info) override
     {
         current_ = CaseResult{};
-        last_info_.clear();
+        said_.clear();
+        unshown_checks_ = 0;
         current_.name = info.name;
         read_tags(info, current_);
         rt::forget_stubs();
@@ -127,20 +152,28 @@ public:
             current_.status = CaseStatus::crashed;
             return;
         }
-        // A case's description of its input (INFO) is said once for the checks that fail on it.
-        std::string info;
-        for (const Catch::MessageInfo& m : stats.infoMessages)
-            info += m.message + '\n';
+        // A case's description of its input (INFO) is said once in the case, before the first
+        // failed check that has it.
         std::ostringstream out;
-        if (info != last_info_)
-            out << info;
-        last_info_ = info;
+        std::vector<std::string> new_info;
+        for (const Catch::MessageInfo& m : stats.infoMessages)
+            if (!said_.count(m.message)) {
+                out << m.message << '\n';
+                new_info.push_back(m.message);
+            }
         if (a.hasExpression())
             out << "failed: " << a.getExpressionInMacro() << "\n  with: " << a.getExpandedExpression() << '\n';
         if (a.hasMessage())
             out << a.getMessage() << '\n';
         out << "  at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
-        current_.output += out.str();
+        // About a screenful: the first failed checks say what is wrong; the rest are counted.
+        const std::string block = out.str();
+        if (!current_.output.empty() && lines_in(current_.output) + lines_in(block) > check_lines) {
+            ++unshown_checks_;
+            return;
+        }
+        said_.insert(new_info.begin(), new_info.end());
+        current_.output += block;
     }
 
     void testCaseEnded(const Catch::TestCaseStats& stats) override
@@ -149,6 +182,9 @@ public:
         if (passed)
             current_.status = CaseStatus::passed;
         current_.score = passed ? current_.max_score : 0;
+        if (unshown_checks_ > 0)
+            current_.output += "... and " + std::to_string(unshown_checks_) + " more failed check" +
+                               (unshown_checks_ == 1 ? "" : "s") + " in this case\n";
         if (stats.totals.assertions.passed == 0 && stats.totals.assertions.failed == 0)
             current_.output += "the test checked nothing: it earns no points\n";
         // An exercise's case (not a picture or agreement case) points to the hint for its trap.
@@ -160,11 +196,22 @@ public:
         results.push_back(current_);
         if (!results_path.empty())
             append_result(results_path, current_);
+        if (say_cases_as_they_end) {
+            say_case(std::cout, current_, last_stub_);
+            std::cout.flush();  // before a crash in the next case ends the process
+        }
     }
 
 private:
+    // The failed checks' share of a case's output: its lines but the few said after them.
+    static constexpr size_t check_lines = case_output_lines - 4;
+
+    static size_t lines_in(const std::string& text) { return static_cast<size_t>(std::count(text.begin(), text.end(), '\n')); }
+
     CaseResult current_;
-    std::string last_info_;
+    std::set<std::string> said_;  // the INFO messages this case has said
+    int unshown_checks_ = 0;      // failed checks past check_lines, counted only
+    std::string last_stub_;       // (say_case's)
 };
 
 CATCH_REGISTER_LISTENER(PointsListener)
@@ -206,6 +253,41 @@ std::string catch_literal(const std::string& name)
     return spec;
 }
 
+// Whether Catch2 would write its console report on standard output: no reporter, file or listing
+// asked for on the command line.
+bool catch_reports_to_console(const Catch::ConfigData& data)
+{
+#ifdef RT_CATCH2_V3
+    return data.reporterSpecifications.empty() && data.defaultOutputFilename.empty() && !data.listTests &&
+           !data.listTags && !data.listReporters && !data.listListeners;
+#else
+    return data.reporterName == "console" && data.outputFilename.empty() && !data.listTests &&
+           !data.listTestNamesOnly && !data.listTags && !data.listReporters;
+#endif
+}
+
+// Whether every test case this run would run is a graded one: a grader's run, not one of the kit's
+// own tests, which link this main too and keep Catch2's report.
+bool only_graded_cases(Catch::Session& session)
+{
+    const Catch::Config& config = session.config();
+    const size_t selected =
+        Catch::filterTests(Catch::getRegistryHub().getTestCaseRegistry().getAllTests(), config.testSpec(), config).size();
+    return selected > 0 && planned_cases(session).size() == selected;
+}
+
+// Catch2's report to nowhere: the listener says the cases instead.
+void quiet_catch_report(Catch::Session& session)
+{
+    Catch::ConfigData data = session.configData();
+#ifdef RT_CATCH2_V3
+    data.defaultOutputFilename = null_device();
+#else
+    data.outputFilename = null_device();
+#endif
+    session.useConfigData(data);  // (the Config made from the command line is made again)
+}
+
 size_t results_so_far()
 {
     std::vector<CaseResult> got;
@@ -229,14 +311,7 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
         std::vector<CaseResult> got;
         read_results(results_path, got);
         if (got.size() > before) {
-            const CaseResult& r = got.back();
-            const std::string verdict = stub_verdict(r);
-            if (verdict.empty())
-                print_case(std::cout, r);
-            else if (r.number != last_stub)
-                std::cout << "  STUB  " << r.number << "  " << verdict << '\n';
-            if (!verdict.empty())
-                last_stub = r.number;
+            say_case(std::cout, got.back(), last_stub);
             continue;
         }
         CaseResult lost = planned;
@@ -331,8 +406,12 @@ int main(int argc, char* argv[])
     int failed = 0;
     if (case_timeout > 0)
         run_isolated(session, this_program(argv[0]), case_timeout);
-    else
+    else {
+        say_cases_as_they_end = catch_reports_to_console(session.configData()) && only_graded_cases(session);
+        if (say_cases_as_they_end)
+            quiet_catch_report(session);
         failed = session.run();
+    }
 
     print_points_table(std::cout, summarize(results));
     if (expect.empty())

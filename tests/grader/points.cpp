@@ -95,7 +95,7 @@ void print_case(std::ostream& out, const CaseResult& r)
         << r.score << '/' << r.max_score << "  " << r.name << '\n';
     if (r.passed())
         return;
-    std::istringstream lines(r.output);
+    std::istringstream lines(tidy_output(r.output));
     std::string line;
     while (std::getline(lines, line))
         out << "          " << line << '\n';
@@ -168,21 +168,25 @@ std::string tidy_output(std::string output)
         output.erase(at, kit.size());
 #endif
     // A stub that fails every input of a loop would write thousands of lines: the first ones say
-    // what is wrong.
-    constexpr size_t max_lines = 40, max_chars = 4000;
-    size_t lines = 0, cut = std::string::npos;
-    for (size_t k = 0; k < output.size(); ++k)
-        if (output[k] == '\n' && ++lines == max_lines) {
-            cut = k;
-            break;
-        }
-    if (cut == std::string::npos && output.size() > max_chars)
-        cut = output.rfind('\n', max_chars);
-    if (cut == std::string::npos && output.size() > max_chars)
-        cut = max_chars;
-    if (cut != std::string::npos && cut < output.size()) {
-        const size_t more = static_cast<size_t>(std::count(output.begin() + static_cast<long>(cut), output.end(), '\n'));
-        output = output.substr(0, cut) + "\n... and " + std::to_string(more) + " more lines";
+    // what is wrong. What is cut becomes one line, so the result is case_output_lines long at most,
+    // and tidying it again changes nothing.
+    constexpr size_t max_chars = 4000;
+    const size_t lines = static_cast<size_t>(std::count(output.begin(), output.end(), '\n')) +
+                         (!output.empty() && output.back() != '\n' ? 1 : 0);
+    size_t cut = std::string::npos;
+    if (lines > case_output_lines) {
+        cut = 0;
+        for (size_t kept = 0; kept + 1 < case_output_lines; ++kept)
+            cut = output.find('\n', cut) + 1;
+    }
+    // (Room under max_chars for the line that says what was cut.)
+    if (output.size() > max_chars && (cut == std::string::npos || cut > max_chars - 64)) {
+        cut = output.rfind('\n', max_chars - 64);
+        cut = cut == std::string::npos ? max_chars - 64 : cut + 1;
+    }
+    if (cut != std::string::npos) {
+        const size_t kept = static_cast<size_t>(std::count(output.begin(), output.begin() + static_cast<long>(cut), '\n'));
+        output = output.substr(0, cut) + "... and " + std::to_string(lines - kept) + " more lines";
     }
     return output;
 }

@@ -3,6 +3,7 @@
 // grade_report.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -43,6 +44,11 @@ struct CaseResult {
     bool passed() const { return status == CaseStatus::passed; }
 };
 
+// The most lines a case's output keeps (about a screenful): the first failed checks say what is
+// wrong, and the rest are counted, not shown. The grader stops adding failed checks a few lines
+// short of it; tidy_output cuts whatever is still longer.
+constexpr std::size_t case_output_lines = 32;
+
 // One case's verdict, and for a failed case what went in and came out, indented.
 void print_case(std::ostream& out, const CaseResult& result);
 
@@ -52,8 +58,8 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
 // Text safe inside XML or HTML: & < > " escaped.
 std::string escape_xml(const std::string& s);
 
-// A case's output as a student reads it: paths relative to the kit, and no more than the first 40
-// lines (or 4000 characters), then how many more there were.
+// A case's output as a student reads it: paths relative to the kit, and no more than the first
+// case_output_lines lines (or 4000 characters), then how many more there were.
 std::string tidy_output(std::string output);
 
 // One case a line, tab-separated, with tabs, newlines and backslashes escaped: number, max score,
