@@ -3,6 +3,7 @@
 #include "common/error.hpp"
 #include "common/number.hpp"
 #include "common/polygon.hpp"
+#include "common/words.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace rt {
 
@@ -331,18 +333,11 @@ private:
         static const std::array<std::string_view, 6> keywords = {"from", "at", "up", "angle", "hither", "resolution"};
         std::array<int, 6> seen_at{};  // the line of each keyword, 0 until seen
         for (std::size_t count = 0; count < keywords.size(); ++count) {
-            std::string missing;  // "'hither' or 'resolution'"
-            std::size_t missing_count = 0;
+            std::vector<std::string> unseen;
             for (std::size_t k = 0; k < keywords.size(); ++k)
                 if (seen_at[k] == 0)
-                    ++missing_count;
-            for (std::size_t k = 0, listed = 0; k < keywords.size(); ++k) {
-                if (seen_at[k] != 0)
-                    continue;
-                ++listed;
-                missing += (listed == 1 ? "" : (listed == missing_count ? " or " : ", "));
-                missing += "'" + std::string(keywords[k]) + "'";
-            }
+                    unseen.push_back("'" + std::string(keywords[k]) + "'");
+            const std::string missing = join_words(unseen, ", ", " or ");  // "'hither' or 'resolution'"
             if (lex_.at_end())
                 fail(lex_.last_token_line(), "view: the file ends before " + missing);
             const Token key = lex_.next();

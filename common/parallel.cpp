@@ -1,6 +1,8 @@
 #include "common/parallel.hpp"
 
-#include <iostream>
+#include "common/notice.hpp"
+
+#include <string>
 
 namespace rt {
 
@@ -16,8 +18,8 @@ void warn_threads_started(int requested, int started)
 {
     static std::once_flag once;
     std::call_once(once, [&] {
-        std::cerr << "asked for " << requested << " threads, but the system started only " << started
-                  << ": rendering on " << started << " (the picture is the same)\n";
+        notice("asked for " + std::to_string(requested) + " threads, but the system started only " +
+               std::to_string(started) + ": rendering on " + std::to_string(started) + " (the picture is the same)");
     });
 }
 

@@ -19,7 +19,7 @@ namespace rt {
 // The threads to use: `requested`, or one a core when 0 (at least 1).
 int resolve_threads(int requested);
 
-// Said once on stderr when the system would not start all the threads asked for.
+// Said once, as a notice (common/notice.hpp), when the system would not start all the threads asked for.
 void warn_threads_started(int requested, int started);
 
 // Runs body(k) for every k in [0, count), on `threads` threads (the caller's own among them). Each

@@ -43,14 +43,17 @@ foreach(nn IN LISTS chapters)
     execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" ${config} --target cases_${nn} OUTPUT_QUIET ERROR_QUIET)
     execute_process(COMMAND "${GRADERS_DIR}/cases_${nn}" --list-cases "${result}" OUTPUT_QUIET ERROR_QUIET)
     # One line for the chapter (grade_report counts it as all of the chapter's cases): a missing
-    # file says so, a file that does not compile gives the compiler's first errors.
+    # file says so, a file that does not compile gives the compiler's first errors. The fields are
+    # points.hpp's: number, max, score, name, output, stubs (none), status.
     if(errors MATCHES "the submission has no ([^ \"]+\\.cpp)")
       set(why "the submission has no ${CMAKE_MATCH_1}")
       set(errors "")
+      set(status no_file)
     else()
       set(why "chapter ${nn} does not compile, so none of its cases ran. The compiler's first errors:")
+      set(status does_not_compile)
     endif()
-    file(APPEND "${result}" "${nn}.build\t0\t0\t${why}\t${errors}\n")
+    file(APPEND "${result}" "${nn}.build\t0\t0\t${why}\t${errors}\t\t${status}\n")
     message(STATUS "chapter ${nn} does not compile:\n${log}")
   else()
     message(STATUS "---- chapter ${nn}: grading")

@@ -9,9 +9,9 @@
 
 #include "02_spheres_triangles/nff_scene.hpp"
 #include "04_shadow_feelers/scene.hpp"
+#include "common/notice.hpp"
 #include "common/scene_file.hpp"
 
-#include <iostream>
 #include <string>
 
 namespace rt {
@@ -31,8 +31,8 @@ inline float nff_light_distance(const NffScene& nff, const NffLight& light)
 }
 
 // Chapters 04-06 (and 07 on, outside --classic) shade every surface opaque: a mirror's Ks becomes
-// its highlight only, and glass (T > 0) is not seen through. Said once, on standard error, so that a
-// dark glass sphere is not taken for a bug; `chapter` names the program.
+// its highlight only, and glass (T > 0) is not seen through. Said once, as a notice
+// (common/notice.hpp), so that a dark glass sphere is not taken for a bug; `chapter` names the program.
 inline void note_unmodelled_materials(const NffScene& nff, const std::string& chapter)
 {
     int mirrors = 0, glass = 0;
@@ -41,9 +41,10 @@ inline void note_unmodelled_materials(const NffScene& nff, const std::string& ch
         glass += m.t > 0.0f;
     }
     if (mirrors + glass > 0)
-        std::cerr << chapter << ": note: " << nff.name << ": " << mirrors << " mirror (Ks > 0) and " << glass
-                  << " glass (T > 0) materials are shaded opaque here, Ks as a highlight only; chapter 03 and "
-                     "chapter 04's --classic render reflections and refractions\n";
+        notice(chapter + ": note: " + nff.name + ": " + std::to_string(mirrors) + " mirror (Ks > 0) and " +
+               std::to_string(glass) +
+               " glass (T > 0) materials are shaded opaque here, Ks as a highlight only; chapter 03 and "
+               "chapter 04's --classic render reflections and refractions");
 }
 
 inline LitScene lit_scene(const NffScene& nff)

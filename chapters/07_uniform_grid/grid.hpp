@@ -10,6 +10,7 @@
 #include "02_spheres_triangles/scene_query.hpp"
 #include "07_uniform_grid/07_uniform_grid.hpp"
 #include "common/error.hpp"
+#include "common/notice.hpp"
 #include "common/stats.hpp"
 
 #include <algorithm>
@@ -196,19 +197,21 @@ inline void list_objects(Grid& grid, const std::vector<std::uint32_t>& ids, cons
         for_each_cell(ranges[i], [&](int p) { grid.object_index[fill[p]++] = ids[i]; });
 }
 
-// The line a build says when the scene made it lower lambda.
+// The notice (common/notice.hpp) a build gives when the scene made it lower lambda.
 inline void say_lambda_lowered(const char* structure, const GridPlan& plan, float asked, int objects)
 {
     if (plan.asked_references == 0)
         return;
-    std::fprintf(stderr,
-                 "%s: at lambda %g (%d x %d x %d cells) its %d objects would be listed %lld times, %.0f each: their boxes "
-                 "overlap too much for cells to sort them apart, and a ray would test more objects than brute force; "
-                 "built at lambda %g instead (%d x %d x %d cells)\n",
-                 structure, static_cast<double>(asked), plan.asked_resolution.x, plan.asked_resolution.y,
-                 plan.asked_resolution.z, objects, plan.asked_references,
-                 static_cast<double>(plan.asked_references) / std::max(1, objects), static_cast<double>(plan.lambda),
-                 plan.shape.n.x, plan.shape.n.y, plan.shape.n.z);
+    char line[640];
+    std::snprintf(line, sizeof line,
+                  "%s: at lambda %g (%d x %d x %d cells) its %d objects would be listed %lld times, %.0f each: their boxes "
+                  "overlap too much for cells to sort them apart, and a ray would test more objects than brute force; "
+                  "built at lambda %g instead (%d x %d x %d cells)",
+                  structure, static_cast<double>(asked), plan.asked_resolution.x, plan.asked_resolution.y,
+                  plan.asked_resolution.z, objects, plan.asked_references,
+                  static_cast<double>(plan.asked_references) / std::max(1, objects), static_cast<double>(plan.lambda),
+                  plan.shape.n.x, plan.shape.n.y, plan.shape.n.z);
+    notice(line);
 }
 
 // The box around every object.
@@ -221,7 +224,7 @@ inline Bounds bounds_of_all(const Objects& objects)
 }
 
 // The plan (plan_grid) of a grid over every object of the scene's box `scene`, up to max_per_axis
-// cells an axis; a lambda lowered is said on stderr in the name of `structure`.
+// cells an axis; a lambda lowered is said as a notice in the name of `structure`.
 inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, float lambda, int max_per_axis,
                               const char* structure)
 {

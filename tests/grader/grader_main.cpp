@@ -16,6 +16,12 @@
 //                         cases (a kept mutant of NN.k), not only in the chapter's agreement or picture
 //   --check-clauses FILE  check the chapter's clause table against the grader's cases (clauses.hpp)
 //
+// Each case is said as the student reads it: its input once, its first failed checks (about a
+// screenful), then how many more failed. Without --case-timeout too, Catch2's own report goes
+// nowhere when every case selected is graded, unless a reporter, an output file or a listing is
+// asked for on the command line. The kit's notices (common/notice.hpp) are off: they speak of the
+// test scenes, not of the student's work.
+//
 // Catch2 v2 and v3 differ in the few interfaces a runner with a listener uses; RT_CATCH2_V3 picks.
 #ifdef RT_CATCH2_V3
 #include <catch2/catch_all.hpp>
@@ -33,12 +39,15 @@
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
 
+#include "common/notice.hpp"
 #include "common/stub.hpp"
+#include "common/words.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <iostream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 namespace rt::grader {
@@ -57,6 +66,10 @@ const Catch::TestCaseInfo& info_of(const Catch::TestCase& test) { return test; }
 const std::string& text_of(const std::string& tag) { return tag; }
 #endif
 
+// How the output of a case that crashed or was stopped begins (its status says so too).
+constexpr const char* stopped_words = "stopped: ";
+constexpr const char* crashed_words = "crashed: ";
+
 // Exit status of a case's process stopped by its CPU limit (the `timeout` command's).
 constexpr int exit_cpu_limit = 124;
 
@@ -67,6 +80,23 @@ constexpr double wall_backstop_factor = 10.0;
 
 std::vector<CaseResult> results;
 std::string results_path;  // appended to after every case, so a crash still leaves the cases before it
+
+// Graded in this process (no --case-timeout), each case is said as it ends, as a grading run says
+// it, in place of Catch2's own report (which repeats every failed check in full).
+bool say_cases_as_they_end = false;
+
+// A case as the console says it: as graded, or, for an exercise still its stub, one line for all of
+// its cases (`last_stub`: the exercise said last).
+void say_case(std::ostream& out, const CaseResult& r, std::string& last_stub)
+{
+    const std::string verdict = stub_verdict(r);
+    if (verdict.empty())
+        print_case(out, r);
+    else if (r.number != last_stub)
+        out << "  STUB  " << r.number << "  " << verdict << '\n';
+    if (!verdict.empty())
+        last_stub = r.number;
+}
 
 // "[ch01][01.2][2pt]": the number is the tag of form NN.k, the points the tag ending in "pt".
 void read_tags(const Catch::TestCaseInfo& info, CaseResult& r)
@@ -90,7 +120,8 @@ public:
     void testCaseStarting(const Catch::TestCaseInfo& info) override
     {
         current_ = CaseResult{};
-        last_info_.clear();
+        said_.clear();
+        unshown_checks_ = 0;
         current_.name = info.name;
         read_tags(info, current_);
         rt::forget_stubs();
@@ -114,7 +145,7 @@ public:
         if (a.getResultType() == Catch::ResultWas::FatalErrorCondition) {
             // The student's code crashed: what the case was working on, if it said, and where.
             std::ostringstream out;
-            out << crashed_mark << a.getMessage() << '\n';
+            out << crashed_words << a.getMessage() << '\n';
             if (working_on_now && *working_on_now)
                 out << "while working on " << (*working_on_now)() << '\n';
             for (const Catch::MessageInfo& m : stats.infoMessages)
@@ -122,45 +153,69 @@ public:
                     out << m.message << '\n';
             out << "  after the check at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
             current_.output = out.str() + current_.output;
+            current_.status = CaseStatus::crashed;
             return;
         }
-        // A case's description of its input (INFO) is said once for the checks that fail on it.
-        std::string info;
-        for (const Catch::MessageInfo& m : stats.infoMessages)
-            info += m.message + '\n';
+        // A case's description of its input (INFO) is said once in the case, before the first
+        // failed check that has it.
         std::ostringstream out;
-        if (info != last_info_)
-            out << info;
-        last_info_ = info;
+        std::vector<std::string> new_info;
+        for (const Catch::MessageInfo& m : stats.infoMessages)
+            if (!said_.count(m.message)) {
+                out << m.message << '\n';
+                new_info.push_back(m.message);
+            }
         if (a.hasExpression())
             out << "failed: " << a.getExpressionInMacro() << "\n  with: " << a.getExpandedExpression() << '\n';
         if (a.hasMessage())
             out << a.getMessage() << '\n';
         out << "  at " << a.getSourceInfo().file << ':' << a.getSourceInfo().line << '\n';
-        current_.output += out.str();
+        // About a screenful: the first failed checks say what is wrong; the rest are counted.
+        const std::string block = out.str();
+        if (!current_.output.empty() && lines_in(current_.output) + lines_in(block) > check_lines) {
+            ++unshown_checks_;
+            return;
+        }
+        said_.insert(new_info.begin(), new_info.end());
+        current_.output += block;
     }
 
     void testCaseEnded(const Catch::TestCaseStats& stats) override
     {
-        current_.passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0;
-        current_.score = current_.passed ? current_.max_score : 0;
+        const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0;
+        if (passed)
+            current_.status = CaseStatus::passed;
+        current_.score = passed ? current_.max_score : 0;
+        if (unshown_checks_ > 0)
+            current_.output += "... and " + std::to_string(unshown_checks_) + " more failed check" +
+                               (unshown_checks_ == 1 ? "" : "s") + " in this case\n";
         if (stats.totals.assertions.passed == 0 && stats.totals.assertions.failed == 0)
             current_.output += "the test checked nothing: it earns no points\n";
         // An exercise's case (not a picture or agreement case) points to the hint for its trap.
-        if (!current_.passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
+        if (!passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
             current_.output += "the trap this case checks: ./build/grade/hint " + current_.number + " 2\n";
-        for (const std::string& exercise : rt::stubs_that_ran())
-            current_.stubs += (current_.stubs.empty() ? "" : " ") + exercise;
+        current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
         if (current_.number.empty())
             return;
         results.push_back(current_);
         if (!results_path.empty())
             append_result(results_path, current_);
+        if (say_cases_as_they_end) {
+            say_case(std::cout, current_, last_stub_);
+            std::cout.flush();  // before a crash in the next case ends the process
+        }
     }
 
 private:
+    // The failed checks' share of a case's output: its lines but the few said after them.
+    static constexpr size_t check_lines = case_output_lines - 4;
+
+    static size_t lines_in(const std::string& text) { return static_cast<size_t>(std::count(text.begin(), text.end(), '\n')); }
+
     CaseResult current_;
-    std::string last_info_;
+    std::set<std::string> said_;  // the INFO messages this case has said
+    int unshown_checks_ = 0;      // failed checks past check_lines, counted only
+    std::string last_stub_;       // (say_case's)
 };
 
 CATCH_REGISTER_LISTENER(PointsListener)
@@ -202,6 +257,41 @@ std::string catch_literal(const std::string& name)
     return spec;
 }
 
+// Whether Catch2 would write its console report on standard output: no reporter, file or listing
+// asked for on the command line.
+bool catch_reports_to_console(const Catch::ConfigData& data)
+{
+#ifdef RT_CATCH2_V3
+    return data.reporterSpecifications.empty() && data.defaultOutputFilename.empty() && !data.listTests &&
+           !data.listTags && !data.listReporters && !data.listListeners;
+#else
+    return data.reporterName == "console" && data.outputFilename.empty() && !data.listTests &&
+           !data.listTestNamesOnly && !data.listTags && !data.listReporters;
+#endif
+}
+
+// Whether every test case this run would run is a graded one: a grader's run, not one of the kit's
+// own tests, which link this main too and keep Catch2's report.
+bool only_graded_cases(Catch::Session& session)
+{
+    const Catch::Config& config = session.config();
+    const size_t selected =
+        Catch::filterTests(Catch::getRegistryHub().getTestCaseRegistry().getAllTests(), config.testSpec(), config).size();
+    return selected > 0 && planned_cases(session).size() == selected;
+}
+
+// Catch2's report to nowhere: the listener says the cases instead.
+void quiet_catch_report(Catch::Session& session)
+{
+    Catch::ConfigData data = session.configData();
+#ifdef RT_CATCH2_V3
+    data.defaultOutputFilename = null_device();
+#else
+    data.outputFilename = null_device();
+#endif
+    session.useConfigData(data);  // (the Config made from the command line is made again)
+}
+
 size_t results_so_far()
 {
     std::vector<CaseResult> got;
@@ -225,26 +315,21 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
         std::vector<CaseResult> got;
         read_results(results_path, got);
         if (got.size() > before) {
-            const CaseResult& r = got.back();
-            const std::string verdict = stub_verdict(r);
-            if (verdict.empty())
-                print_case(std::cout, r);
-            else if (r.number != last_stub)
-                std::cout << "  STUB  " << r.number << "  " << verdict << '\n';
-            if (!verdict.empty())
-                last_stub = r.number;
+            say_case(std::cout, got.back(), last_stub);
             continue;
         }
         CaseResult lost = planned;
         const std::string limit = std::to_string(cpu_limit);
         switch (status.end) {
         case ChildStatus::End::exited:
+            lost.status = status.code == exit_cpu_limit ? CaseStatus::stopped : CaseStatus::crashed;
             lost.output = status.code == exit_cpu_limit
-                              ? stopped_mark + ("the case used more than " + limit + " s of CPU time: an endless loop?")
-                              : crashed_mark + ("the case ended without reporting (exit status " + std::to_string(status.code) + ")");
+                              ? stopped_words + ("the case used more than " + limit + " s of CPU time: an endless loop?")
+                              : crashed_words + ("the case ended without reporting (exit status " + std::to_string(status.code) + ")");
             break;
         case ChildStatus::End::crashed:
-            lost.output = crashed_mark + std::string("the case crashed (") +
+            lost.status = CaseStatus::crashed;
+            lost.output = crashed_words + std::string("the case crashed (") +
 #ifdef _WIN32
                           std::string("exception code ") + std::to_string(static_cast<unsigned>(status.code)) +
 #else
@@ -253,7 +338,8 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
                           ") before it could report";
             break;
         case ChildStatus::End::stopped:
-            lost.output = stopped_mark + ("the case was still running after " +
+            lost.status = CaseStatus::stopped;
+            lost.output = stopped_words + ("the case was still running after " +
                                           std::to_string(static_cast<int>(wall_backstop_factor * cpu_limit)) +
                                           " s on the clock: is it waiting for something?");
             break;
@@ -274,6 +360,9 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
 int main(int argc, char* argv[])
 {
     using namespace rt::grader;
+    // The kit's notices (a grid built at a lower lambda than asked) speak of the test scenes the
+    // cases build, not of the student's work: a grading run keeps them out of its output.
+    rt::set_notices(false);
     if (const std::optional<int> regraded = regrade_if_stale(this_program(argv[0]), argc, argv))
         return *regraded;
     Catch::Session session;
@@ -332,8 +421,12 @@ int main(int argc, char* argv[])
     int failed = 0;
     if (case_timeout > 0)
         run_isolated(session, this_program(argv[0]), case_timeout);
-    else
+    else {
+        say_cases_as_they_end = catch_reports_to_console(session.configData()) && only_graded_cases(session);
+        if (say_cases_as_they_end)
+            quiet_catch_report(session);
         failed = session.run();
+    }
 
     print_points_table(std::cout, summarize(results));
     if (expect.empty())

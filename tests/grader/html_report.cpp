@@ -111,9 +111,9 @@ bool write_html_report(const std::string& path, const std::string& title, std::v
             out << "<h2 id=\"ch" << chapter << "\">chapter " << chapter << ": " << chapters[chapter].first << " / "
                 << chapters[chapter].second << "</h2>\n<table><tr><th>exercise</th><th>case</th><th>points</th></tr>\n";
         }
-        out << "<tr class=\"" << (r.passed ? "ok" : "fail") << "\"><td>" << escape_xml(r.number) << "</td><td>"
+        out << "<tr class=\"" << (r.passed() ? "ok" : "fail") << "\"><td>" << escape_xml(r.number) << "</td><td>"
             << escape_xml(r.name);
-        if (!r.passed && !r.output.empty())
+        if (!r.passed() && !r.output.empty())
             out << "<pre>" << escape_xml(r.output) << "</pre>" << picture_figures(r.output);
         out << "</td><td class=\"points\">" << r.score << " / " << r.max_score << "</td></tr>\n";
     }

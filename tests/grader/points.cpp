@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -59,7 +60,21 @@ std::string escape_json(const std::string& s)
     return out.str();
 }
 
+// The results file's words for CaseStatus, in its order.
+constexpr const char* status_words[] = {"passed", "failed", "crashed", "stopped", "stub",
+                                        "waits_for_stub", "untouched", "does_not_compile", "no_file"};
+
 }  // namespace
+
+const char* status_word(CaseStatus status) { return status_words[static_cast<int>(status)]; }
+
+std::optional<CaseStatus> status_of_word(const std::string& word)
+{
+    for (int k = 0; k < static_cast<int>(std::size(status_words)); ++k)
+        if (word == status_words[k])
+            return static_cast<CaseStatus>(k);
+    return std::nullopt;
+}
 
 std::string escape_xml(const std::string& s)
 {
@@ -76,11 +91,11 @@ std::string escape_xml(const std::string& s)
 
 void print_case(std::ostream& out, const CaseResult& r)
 {
-    out << (r.passed ? "  ok    " : "  FAIL  ") << std::left << std::setw(6) << r.number << std::right << std::setw(2)
+    out << (r.passed() ? "  ok    " : "  FAIL  ") << std::left << std::setw(6) << r.number << std::right << std::setw(2)
         << r.score << '/' << r.max_score << "  " << r.name << '\n';
-    if (r.passed)
+    if (r.passed())
         return;
-    std::istringstream lines(r.output);
+    std::istringstream lines(tidy_output(r.output));
     std::string line;
     while (std::getline(lines, line))
         out << "          " << line << '\n';
@@ -105,7 +120,7 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
             out << "    " << std::left << std::setw(8) << number << std::right << std::setw(13) << points.first
                 << " / " << points.second << '\n';
             for (const CaseResult& r : results)
-                if (r.number == number && !r.passed)
+                if (r.number == number && !r.passed())
                     out << "      lost " << r.max_score << ": " << r.name << '\n';
         }
     }
@@ -153,21 +168,25 @@ std::string tidy_output(std::string output)
         output.erase(at, kit.size());
 #endif
     // A stub that fails every input of a loop would write thousands of lines: the first ones say
-    // what is wrong.
-    constexpr size_t max_lines = 40, max_chars = 4000;
-    size_t lines = 0, cut = std::string::npos;
-    for (size_t k = 0; k < output.size(); ++k)
-        if (output[k] == '\n' && ++lines == max_lines) {
-            cut = k;
-            break;
-        }
-    if (cut == std::string::npos && output.size() > max_chars)
-        cut = output.rfind('\n', max_chars);
-    if (cut == std::string::npos && output.size() > max_chars)
-        cut = max_chars;
-    if (cut != std::string::npos && cut < output.size()) {
-        const size_t more = static_cast<size_t>(std::count(output.begin() + static_cast<long>(cut), output.end(), '\n'));
-        output = output.substr(0, cut) + "\n... and " + std::to_string(more) + " more lines";
+    // what is wrong. What is cut becomes one line, so the result is case_output_lines long at most,
+    // and tidying it again changes nothing.
+    constexpr size_t max_chars = 4000;
+    const size_t lines = static_cast<size_t>(std::count(output.begin(), output.end(), '\n')) +
+                         (!output.empty() && output.back() != '\n' ? 1 : 0);
+    size_t cut = std::string::npos;
+    if (lines > case_output_lines) {
+        cut = 0;
+        for (size_t kept = 0; kept + 1 < case_output_lines; ++kept)
+            cut = output.find('\n', cut) + 1;
+    }
+    // (Room under max_chars for the line that says what was cut.)
+    if (output.size() > max_chars && (cut == std::string::npos || cut > max_chars - 64)) {
+        cut = output.rfind('\n', max_chars - 64);
+        cut = cut == std::string::npos ? max_chars - 64 : cut + 1;
+    }
+    if (cut != std::string::npos) {
+        const size_t kept = static_cast<size_t>(std::count(output.begin(), output.begin() + static_cast<long>(cut), '\n'));
+        output = output.substr(0, cut) + "... and " + std::to_string(lines - kept) + " more lines";
     }
     return output;
 }
@@ -175,7 +194,7 @@ std::string tidy_output(std::string output)
 static void write_line(std::ostream& out, const CaseResult& r)
 {
     out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
-        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\n';
+        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\t' << status_word(r.status) << '\n';
 }
 
 bool write_results(const std::string& path, const std::vector<CaseResult>& results)
@@ -216,10 +235,18 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
         r.number = fields[0];
         r.max_score = std::stoi(fields[1]);
         r.score = std::stoi(fields[2]);
-        r.passed = r.score == r.max_score;
         r.name = fields[3];
         r.output = fields.size() > 4 ? fields[4] : "";
         r.stubs = fields.size() > 5 ? fields[5] : "";
+        const std::optional<CaseStatus> status = fields.size() > 6 ? status_of_word(fields[6]) : std::nullopt;
+        if (fields.size() > 6 && !status)
+            return false;
+        // (A line from before the status field: what its score and number say.)
+        const bool build_line = r.number.size() > 2 && r.number.compare(2, std::string::npos, ".build") == 0;
+        r.status = status                        ? *status
+                   : build_line                  ? CaseStatus::does_not_compile
+                   : r.score == r.max_score      ? CaseStatus::passed
+                                                 : CaseStatus::failed;
         results.push_back(r);
     }
     return true;
@@ -238,7 +265,7 @@ bool write_gradescope_json(const std::string& path, const std::vector<CaseResult
         out << (k ? "," : "") << "\n    {\"name\": \"" << escape_json(r.name) << "\", \"number\": \""
             << escape_json(r.number) << "\", \"score\": " << r.score << ", \"max_score\": " << r.max_score
             << ", \"output\": \"";
-        const std::string html = as_html && !r.passed ? as_html(r) : "";
+        const std::string html = as_html && !r.passed() ? as_html(r) : "";
         if (html.empty())
             out << escape_json(r.output) << "\"}";
         else
@@ -258,13 +285,13 @@ bool write_junit_xml(const std::string& path, const std::vector<CaseResult>& res
     for (const auto& [chapter, cases] : by_chapter) {
         int failures = 0;
         for (const CaseResult* r : cases)
-            failures += r->passed ? 0 : 1;
+            failures += r->passed() ? 0 : 1;
         out << "  <testsuite name=\"chapter " << chapter << "\" tests=\"" << cases.size() << "\" failures=\""
             << failures << "\">\n";
         for (const CaseResult* r : cases) {
             out << "    <testcase classname=\"ch" << chapter << '.' << escape_xml(r->number) << "\" name=\""
                 << escape_xml(r->name) << "\">";
-            if (!r->passed)
+            if (!r->passed())
                 out << "<failure message=\"lost " << r->max_score << " points\">" << escape_xml(r->output)
                     << "</failure>";
             out << "</testcase>\n";
@@ -290,17 +317,17 @@ bool check_expectation(std::ostream& out, const std::vector<CaseResult>& results
     if (expect == "full") {
         ok = score == max_score;
         for (const CaseResult& r : results)
-            if (!r.passed)
+            if (!r.passed())
                 out << "grader self-check: the solution fails " << r.number << " '" << r.name << "'\n";
     } else if (expect == "zero") {
         ok = score == 0;
         for (const CaseResult& r : results)
-            if (r.passed)
+            if (r.passed())
                 out << "grader self-check: the untouched stub passes " << r.number << " '" << r.name
                     << "': that case cannot tell a stub from an answer\n";
         // The report says "still the handed-out stub" only of a case that saw a stub run.
         for (const CaseResult& r : results)
-            if (!r.passed && r.stubs.empty()) {
+            if (!r.passed() && r.stubs.empty()) {
                 ok = false;
                 out << "grader self-check: " << r.number << " '" << r.name
                     << "' fails on the stubs but ran none of them: the report cannot say it waits for a stub\n";

@@ -3,22 +3,51 @@
 // grade_report.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 namespace rt::grader {
 
+// How a case ended. The results file carries it as a word ("passed", "crashed", ...), so whatever
+// reads a grade (the report, the class page) knows a case's state from this field, never from the
+// words of its message.
+enum class CaseStatus {
+    passed,            // every check held
+    failed,            // a check failed, or the case checked nothing
+    crashed,           // the student's code crashed in the case, or its process ended without reporting
+    stopped,           // the case ran past its time and was stopped
+    // A line of the summary (summary.hpp) standing for several cases:
+    stub,              // an exercise still its handed-out stub
+    waits_for_stub,    // an exercise whose cases run another exercise's stub
+    untouched,         // a chapter whose every case ran a stub
+    does_not_compile,  // a chapter that did not compile (grade.cmake's NN.build line)
+    no_file,           // a chapter whose file the submission does not have (the same)
+};
+
+// The status as the results file writes it ("waits_for_stub"), and back; an unknown word is nullopt.
+const char* status_word(CaseStatus status);
+std::optional<CaseStatus> status_of_word(const std::string& word);
+
 struct CaseResult {
     std::string number;   // "NN.k": chapter NN, exercise k (or P for the picture)
     std::string name;     // the behaviour checked
     int max_score = 0;
     int score = 0;
-    bool passed = false;
+    CaseStatus status = CaseStatus::failed;
     std::string output;   // what went in and what came out, for a failed case
     std::string stubs;    // the exercises whose handed-out stubs ran in the case: "07.1 07.3"
+
+    bool passed() const { return status == CaseStatus::passed; }
 };
+
+// The most lines a case's output keeps (about a screenful): the first failed checks say what is
+// wrong, and the rest are counted, not shown. The grader stops adding failed checks a few lines
+// short of it; tidy_output cuts whatever is still longer.
+constexpr std::size_t case_output_lines = 32;
 
 // One case's verdict, and for a failed case what went in and came out, indented.
 void print_case(std::ostream& out, const CaseResult& result);
@@ -29,11 +58,14 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
 // Text safe inside XML or HTML: & < > " escaped.
 std::string escape_xml(const std::string& s);
 
-// A case's output as a student reads it: paths relative to the kit, and no more than the first 40
-// lines (or 4000 characters), then how many more there were.
+// A case's output as a student reads it: paths relative to the kit, and no more than the first
+// case_output_lines lines (or 4000 characters), then how many more there were.
 std::string tidy_output(std::string output);
 
-// One case a line, tab-separated, with tabs, newlines and backslashes escaped.
+// One case a line, tab-separated, with tabs, newlines and backslashes escaped: number, max score,
+// score, name, output, stubs, status. A line without the status (a file written before it was
+// added) reads as passed when its score is whole and failed otherwise, an NN.build line as
+// does_not_compile; a reader that knows only the first six fields still reads this one.
 bool write_results(const std::string& path, const std::vector<CaseResult>& results);
 bool append_result(const std::string& path, const CaseResult& result);
 bool read_results(const std::string& path, std::vector<CaseResult>& results);

@@ -1,5 +1,7 @@
 #include "tests/grader/summary.hpp"
 
+#include "common/words.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <map>
@@ -27,14 +29,8 @@ bool ran_stub(const CaseResult& r, const std::string& exercise)
 std::string in_words(const std::string& list)
 {
     std::istringstream words(list);
-    std::vector<std::string> w{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
-    std::string out;
-    for (size_t k = 0; k < w.size(); ++k)
-        out += (k == 0 ? "" : k + 1 == w.size() ? " and " : ", ") + w[k];
-    return out;
+    return join_words({std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()}, ", ", " and ");
 }
-
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 std::string grep_hint(const std::string& exercise)
 {
@@ -43,13 +39,12 @@ std::string grep_hint(const std::string& exercise)
 
 const std::string untouched_words = " is still the handed-out stubs";
 const std::string stub_words = " is still the handed-out stub";
-const std::string missing_words = "the submission has no ";
 
 }  // namespace
 
 std::string stub_verdict(const CaseResult& r)
 {
-    if (r.passed || r.stubs.empty())
+    if (r.passed() || r.stubs.empty())
         return "";
     if (ran_stub(r, r.number))
         return r.number + stub_words;
@@ -84,14 +79,13 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
         for (const CaseResult& r : chapter) {
             max_score += r.max_score;
             score += r.score;
-            every_case_on_stubs = every_case_on_stubs && !r.passed && !r.stubs.empty();
+            every_case_on_stubs = every_case_on_stubs && !r.passed() && !r.stubs.empty();
         }
         if (builds.count(nn)) {
             CaseResult line = builds[nn];
             line.number = nn;
             line.max_score = max_score;
             line.score = 0;
-            line.passed = max_score == 0;
             out.push_back(line);
             continue;
         }
@@ -99,6 +93,7 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
             CaseResult line;
             line.number = nn;
             line.name = "chapter " + nn + untouched_words;
+            line.status = CaseStatus::untouched;
             line.max_score = max_score;
             line.output = "every case ran a stub you were handed; start with " + grep_hint(nn + ".1");
             out.push_back(line);
@@ -117,13 +112,16 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
             if (at != stub_line.end()) {
                 CaseResult& line = out[at->second];
                 line.max_score += r.max_score;
-                if (ran_stub(r, r.number))  // its own stub outranks another's
+                if (ran_stub(r, r.number)) {  // its own stub outranks another's
                     line.name = verdict;
+                    line.status = CaseStatus::stub;
+                }
                 continue;
             }
             CaseResult line;
             line.number = r.number;
             line.name = verdict;
+            line.status = ran_stub(r, r.number) ? CaseStatus::stub : CaseStatus::waits_for_stub;
             line.max_score = r.max_score;
             line.stubs = r.stubs;
             line.output = "to find it: " + grep_hint(r.stubs.substr(0, r.stubs.find(' '))) +
@@ -138,29 +136,30 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
 std::vector<ChapterMark> chapter_marks(const std::vector<CaseResult>& summarized)
 {
     std::vector<ChapterMark> marks;
+    std::vector<std::vector<std::string>> words;  // each chapter's marks
     for (const CaseResult& r : summarized) {
         const std::string nn = chapter_of(r.number);
-        if (marks.empty() || marks.back().chapter != nn)
+        if (marks.empty() || marks.back().chapter != nn) {
             marks.push_back(ChapterMark{nn, 0, 0, ""});
+            words.emplace_back();
+        }
         ChapterMark& m = marks.back();
         m.score += r.score;
         m.max_score += r.max_score;
-        std::string mark;
-        if (r.number == nn && starts_with(r.name, missing_words))
-            mark = "no file";
-        else if (r.number == nn && r.name.find(untouched_words) != std::string::npos)
-            mark = "untouched";
-        else if (r.number == nn)
-            mark = "does not compile";
-        else if (r.name == r.number + stub_words)
-            mark = "stub " + r.number;
-        else if (starts_with(r.output, stopped_mark))
-            mark = "stopped " + r.number;
-        else if (starts_with(r.output, crashed_mark))
-            mark = "crashed " + r.number;
-        if (!mark.empty())
-            m.marks += (m.marks.empty() ? "" : ", ") + mark;
+        switch (r.status) {
+        case CaseStatus::no_file: words.back().push_back("no file"); break;
+        case CaseStatus::untouched: words.back().push_back("untouched"); break;
+        case CaseStatus::does_not_compile: words.back().push_back("does not compile"); break;
+        case CaseStatus::stub: words.back().push_back("stub " + r.number); break;
+        case CaseStatus::stopped: words.back().push_back("stopped " + r.number); break;
+        case CaseStatus::crashed: words.back().push_back("crashed " + r.number); break;
+        case CaseStatus::passed:
+        case CaseStatus::failed:
+        case CaseStatus::waits_for_stub: break;
+        }
     }
+    for (size_t k = 0; k < marks.size(); ++k)
+        marks[k].marks = join_words(words[k], ", ");
     return marks;
 }
 

@@ -11,12 +11,9 @@
 
 namespace rt::grader {
 
-// How a case that did not report ends its output: the case's process was stopped, or crashed.
-constexpr const char* stopped_mark = "stopped: ";
-constexpr const char* crashed_mark = "crashed: ";
-
 // The graded cases as the report shows them. `NN.build` lines (a chapter that did not compile,
-// written by grade.cmake) stand for their chapter's cases.
+// written by grade.cmake) stand for their chapter's cases. Each line that stands for several cases
+// has their status: untouched, stub or waits_for_stub, or the build line's own.
 std::vector<CaseResult> summarize(const std::vector<CaseResult>& results);
 
 // For a case that failed while a handed-out stub ran, the one line that says so ("07.3 is still
@@ -24,8 +21,8 @@ std::vector<CaseResult> summarize(const std::vector<CaseResult>& results);
 std::string stub_verdict(const CaseResult& r);
 
 // One chapter of a summarized grade, as the class page shows it: its points, and what an
-// instructor should look at ("no file", "does not compile", "untouched", "stubs: 07.3",
-// "stopped: 07.2"), empty when nothing.
+// instructor should look at, from each line's status ("no file", "does not compile", "untouched",
+// "stub 07.3", "stopped 07.2", "crashed 07.4"), empty when nothing.
 struct ChapterMark {
     std::string chapter;
     int score = 0, max_score = 0;
