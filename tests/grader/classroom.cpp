@@ -67,7 +67,11 @@ std::string cut_message(const std::string& message, size_t limit)
 {
     if (message.size() <= limit)
         return message;
-    const std::string note = "... (cut here: the job's summary page has the whole message)";
+    if (limit == 0)
+        return "";
+    if (limit < 40)  // a few characters would say nothing
+        return "(cut: the job's summary page, or the grade step's log, has the message)";
+    const std::string note = "... (cut here: the job's summary page, or the grade step's log, has it whole)";
     size_t cut = limit;
     const size_t line = message.rfind('\n', limit);
     if (line != std::string::npos && line > limit / 2)
@@ -151,14 +155,18 @@ std::string base64_encode(const std::string& bytes)
 
 std::string classroom_result_json(const std::vector<CaseResult>& summarized, size_t budget)
 {
-    // Whole messages when they fit, else shorter ones, down to none: the points always go.
-    std::string json;
-    for (const size_t limit : {size_t(4000), size_t(1500), size_t(600), size_t(200), size_t(0)}) {
-        json = result_json(summarized, limit);
-        if ((json.size() + 2) / 3 * 4 <= budget)
-            break;
+    // Whole messages when they fit, else each cut to the longest length that lets them all fit,
+    // down to none: the cases and their points always go.
+    const auto fits = [&](const std::string& json) { return (json.size() + 2) / 3 * 4 <= budget; };
+    std::string json = result_json(summarized, std::string::npos);
+    if (fits(json))
+        return json;
+    size_t low = 0, high = 4000;  // fits(low) is taken to hold; fits(high) does not
+    while (high - low > 1) {
+        const size_t mid = (low + high) / 2;
+        (fits(result_json(summarized, mid)) ? low : high) = mid;
     }
-    return json;
+    return result_json(summarized, low);
 }
 
 bool append_classroom_output(const std::string& path, const std::vector<CaseResult>& summarized)
