@@ -2,6 +2,7 @@
 
 #include "tests/grader/summary.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <map>
