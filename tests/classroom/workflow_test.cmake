@@ -174,9 +174,15 @@ if(NOT step_${reporter_step}_with_runners STREQUAL "grade"
    OR NOT step_${reporter_step}_env_GRADE_RESULTS STREQUAL "\${{ steps.grade.outputs.result }}")
   fail("the reporter should get runners: grade and GRADE_RESULTS: \${{ steps.grade.outputs.result }}")
 endif()
-# The packages are the kit's own list, installed by its own script, which the handout carries.
-if(NOT step_${packages_step}_run STREQUAL "bash .ci/install-packages" OR NOT EXISTS "${handout}/.ci/install-packages")
-  fail("the packages step should run the handout's own .ci/install-packages, not '${step_${packages_step}_run}'")
+# The packages are the kit's own list, installed by its own script, which the handout carries (or,
+# in a template without .ci/, by apt-get from the same list).
+file(READ "${handout}/.ci/install-packages" script)
+string(REGEX MATCH "\npackages=\\(([^)]+)\\)" line "${script}")
+set(packages "${CMAKE_MATCH_1}")
+string(FIND "${step_${packages_step}_run}" "  bash .ci/install-packages\n" by_script)
+string(FIND "${step_${packages_step}_run}" " --no-install-recommends ${packages}\n" by_list)
+if(NOT packages OR by_script LESS 0 OR by_list LESS 0)
+  fail("the packages step should run the handout's own .ci/install-packages, or install its list (${packages}):\n${step_${packages_step}_run}")
 endif()
 # The build kept between pushes: restored before it is built, saved right after (before grading,
 # whose failing cases fail the job, which would skip a cache's own save at the job's end).
