@@ -2,7 +2,8 @@
 # lines are the solutions'), with each chapter's hints cut to the tiers the course allows and its
 # contracts at the level the course chooses.
 #
-#   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] [-D CONTRACTS=behaviour|detailed] -P tests/handout.cmake
+#   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] [-D CONTRACTS=behaviour|detailed]
+#         [-D CLASSROOM_CHAPTERS="01;02"] [-D CLASSROOM=OFF] -P tests/handout.cmake
 #
 # HINT_TIERS (default 3, all): the tiers of every chapters/NN_name/hints.md kept, 1 the idea, 2 the
 # trap, 3 the walk-through; 0 leaves the hints out.
@@ -10,6 +11,9 @@
 # carry a `// DETAIL BEGIN` ... `// DETAIL END` block of steps under it (tests/contract_detail.cmake).
 # `behaviour` drops those blocks from every header and exercise; `detailed`, for an introductory
 # course, keeps the steps and drops only the marker lines. The grader and the programs build the same.
+# The handout is also a GitHub Classroom template: .github/workflows/classroom.yml grades every push
+# (tests/classroom/classroom.yml) of the chapters in CLASSROOM_CHAPTERS (default: all), with a copy
+# of the handed-out stubs in .github/classroom/stubs; CLASSROOM=OFF leaves both out.
 get_filename_component(kit "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT OUT)
   message(FATAL_ERROR "handout: say where to write it: -D OUT=<folder>")
@@ -29,7 +33,7 @@ endif()
 include("${CMAKE_CURRENT_LIST_DIR}/contract_detail.cmake")
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")
-foreach(entry CMakeLists.txt CMakePresets.json README.md .ci .devcontainer chapters common exercises tests)
+foreach(entry CMakeLists.txt CMakePresets.json README.md .gitignore .ci .devcontainer chapters common exercises tests)
   if(EXISTS "${kit}/${entry}")
     file(COPY "${kit}/${entry}" DESTINATION "${OUT}")
   endif()
@@ -72,5 +76,25 @@ if(CONTRACTS STREQUAL "detailed")
   set(done "kept")
 else()
   set(done "dropped")
+endif()
+if(NOT DEFINED CLASSROOM OR CLASSROOM)
+  if(NOT "${CLASSROOM_CHAPTERS}" MATCHES "^([0-9][0-9](;[0-9][0-9])*)?$")
+    message(FATAL_ERROR "handout: CLASSROOM_CHAPTERS is a list of chapter numbers, \"01;02\", not '${CLASSROOM_CHAPTERS}'")
+  endif()
+  set(RT_GRADE_CHAPTERS "${CLASSROOM_CHAPTERS}")
+  # The packages a student needs, from the one list (.ci/install-packages).
+  file(READ "${kit}/.ci/install-packages" script)
+  if(NOT script MATCHES "\npackages=\\(([^)]+)\\)")
+    message(FATAL_ERROR "handout: .ci/install-packages has no line packages=(...)")
+  endif()
+  set(RT_PACKAGES "${CMAKE_MATCH_1}")
+  configure_file("${kit}/tests/classroom/classroom.yml" "${OUT}/.github/workflows/classroom.yml" @ONLY)
+  file(GLOB stubs "${kit}/exercises/[0-9][0-9]_*.cpp")
+  file(COPY ${stubs} DESTINATION "${OUT}/.github/classroom/stubs")
+  set(graded "every chapter")
+  if(CLASSROOM_CHAPTERS)
+    set(graded "chapters ${CLASSROOM_CHAPTERS}")
+  endif()
+  message(STATUS "GitHub Classroom's workflow, grading ${graded}: ${OUT}/.github/workflows/classroom.yml")
 endif()
 message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints and ${CONTRACTS} contracts (${detail_blocks} step blocks ${done}): ${OUT}")

@@ -2,7 +2,9 @@
 # and loses the walk-through; 0 leaves no hint. CONTRACTS=behaviour (the default) drops every
 # `// DETAIL BEGIN` ... `// DETAIL END` block of steps from the contracts, markers and all; detailed
 # keeps the steps and drops only the markers. No handout holds a solution or a mutant, and a
-# handout configures. Malformed markers stop the handout rather than hand out the steps.
+# handout configures. Malformed markers stop the handout rather than hand out the steps. The first
+# handout carries GitHub Classroom's workflow and the stubs it restores; the second, written with
+# CLASSROOM=OFF, neither (the workflow's own test: classroom/workflow_test.cmake).
 #   cmake -D KIT=<the kit> -D HINT=<the hint program> -D WORK=<a scratch folder> -P handout_test.cmake
 cmake_minimum_required(VERSION 3.22)
 
@@ -47,13 +49,27 @@ foreach(setting "2:" "0:detailed")
     set(level "${contracts}")
   endif()
   set(out "${WORK}/tiers_${tiers}")
-  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" ${contracts_flag} -P "${KIT}/tests/handout.cmake"
+  set(classroom ON)
+  if(tiers EQUAL 0)
+    set(classroom OFF)
+  endif()
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" ${contracts_flag}
+      -D "CLASSROOM=${classroom}" -P "${KIT}/tests/handout.cmake"
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "handout.cmake failed with HINT_TIERS=${tiers} ${contracts_flag}:\n${log}")
   endif()
   if(EXISTS "${out}/solutions" OR EXISTS "${out}/tests/mutants" OR EXISTS "${out}/tests/mutation" OR NOT EXISTS "${out}/exercises")
     message(FATAL_ERROR "the handout in ${out} should have exercises/ and neither solutions/ nor tests/mutants/ nor tests/mutation/")
+  endif()
+  file(GLOB stubs "${out}/.github/classroom/stubs/*.cpp")
+  file(GLOB exercises "${out}/exercises/*.cpp")
+  list(LENGTH stubs n_stubs)
+  list(LENGTH exercises n_exercises)
+  if(classroom AND (NOT EXISTS "${out}/.github/workflows/classroom.yml" OR NOT n_stubs EQUAL n_exercises))
+    message(FATAL_ERROR "the handout in ${out} should carry .github/workflows/classroom.yml and a stub for each of its ${n_exercises} exercises")
+  elseif(NOT classroom AND EXISTS "${out}/.github")
+    message(FATAL_ERROR "the handout in ${out} was written with CLASSROOM=OFF, yet has .github/")
   endif()
   execute_process(COMMAND "${HINT}" --check ${tiers} --kit "${out}" RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)

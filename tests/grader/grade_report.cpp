@@ -11,6 +11,9 @@
 // A missing results file is named, and the report still covers the others. With --gradebook FILE --student NAME it also appends the
 // student's points per chapter to a CSV gradebook, and with --class-row FILE a row of the class
 // page (batch grading): the student's points per chapter, each marked with what went wrong there.
+// With --classroom-output FILE it appends GitHub Classroom's `result=` line to a step's output
+// file, and with --step-summary FILE the points as Markdown to the job's summary (classroom.hpp).
+#include "tests/grader/classroom.hpp"
 #include "tests/grader/html_report.hpp"
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
@@ -23,7 +26,7 @@
 int main(int argc, char** argv)
 {
     using namespace rt::grader;
-    std::string json, junit, gradebook, student, html, class_row, title = "Grade";
+    std::string json, junit, gradebook, student, html, class_row, title = "Grade", classroom_output, step_summary;
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
@@ -41,6 +44,10 @@ int main(int argc, char** argv)
             class_row = argv[++k];
         else if (arg == "--title" && k + 1 < argc)
             title = argv[++k];
+        else if (arg == "--classroom-output" && k + 1 < argc)
+            classroom_output = argv[++k];
+        else if (arg == "--step-summary" && k + 1 < argc)
+            step_summary = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
             std::cerr << "grade_report: unknown option '" << arg << "'\n";
             return 2;
@@ -87,5 +94,9 @@ int main(int argc, char** argv)
         if (!append_class_row(class_row, student, chapter_marks(results)))
             return std::cerr << "grade_report: " << class_row << ": cannot write\n", 2;
     }
+    if (!classroom_output.empty() && !append_classroom_output(classroom_output, results))
+        return std::cerr << "grade_report: " << classroom_output << ": cannot write\n", 2;
+    if (!step_summary.empty() && !append_step_summary(step_summary, results))
+        return std::cerr << "grade_report: " << step_summary << ": cannot write\n", 2;
     return missing == 0 ? 0 : 1;
 }
