@@ -13,8 +13,9 @@
 namespace rt {
 
 enum class SphereTest { slide, precise };
-// watertight_bounded is the watertight test refusing a hit within its own rounding of t = 0
-// (watertight_error.hpp): chapter 04 on, where rays leave surfaces.
+// watertight_bounded is the watertight test refusing a hit within its own rounding of t = 0, where
+// double cannot tell it from the origin either (watertight_error.hpp): chapter 04 on, where rays
+// leave surfaces.
 enum class TriangleTest { slide, moller_trumbore, watertight, watertight_bounded };
 
 struct ShapeTests {
@@ -28,17 +29,19 @@ inline std::optional<float> hit_sphere(const Ray& ray, const Sphere& sphere, Int
     return test == SphereTest::slide ? hit_sphere_slide(ray, sphere, range) : hit_sphere_precise(ray, sphere, range);
 }
 
-// The watertight test refusing a hit within its rounding of the ray's origin: its own surface, or
-// nothing that can be told from it. The hit is returned as a new optional built from its fields:
+// The watertight test refusing a hit within its rounding of the ray's origin, its own surface or
+// nothing that can be told from it, unless double finds it certainly in front (watertight_error.hpp). The hit is returned as a new optional built from its fields:
 // returning the test's optional itself (or nullopt) made GCC 12 copy it through the stack, 16 bytes
 // read back right after two 8-byte writes, a stall on every test, hit or not: chapter 04's figure
 // took 18% longer that way, 3% longer this way.
 inline std::optional<TriangleHit<float>> hit_triangle_bounded(const Ray& ray, const Triangle& tri, Interval range)
 {
     const std::optional<TriangleHit<float>> hit = hit_triangle_watertight(ray, tri, range);
-    if (hit && hit->t > watertight_t_error(ray, tri))
+    if (!hit)
+        return std::nullopt;
+    if (hit->t > watertight_t_error(ray, tri))
         return TriangleHit<float>{hit->t, hit->beta, hit->gamma};
-    return std::nullopt;
+    return hit_triangle_decided_in_double(ray, tri, range);
 }
 
 // One counted triangle test, its hit written into `hit`: true when the ray hits. Each test's

@@ -1,9 +1,10 @@
 // How far the watertight test's t (EXERCISE 02.5) can be from the true distance, from float's
 // rounding alone: a conservative bound in the manner of pbrt-v3 (Pharr, Jakob and Humphreys,
 // "Physically Based Rendering", 3rd ed., sec. 3.9.6, "Robust Triangle Intersections"). Chapter 04
-// refuses any hit nearer than this bound (TriangleTest::watertight_bounded, shape_tests.hpp): a ray
-// leaving a triangle then never finds that triangle again, however large it is or far from the
-// origin (chapter 04's lesson, "Where the robust offset stops, and the test's own bound").
+// refuses any hit nearer than this bound that double cannot place in front of the ray either
+// (TriangleTest::watertight_bounded, shape_tests.hpp): a ray leaving a triangle then never finds
+// that triangle again, however large it is or far from the origin (chapter 04's lesson, "Where the
+// robust offset stops, and the test's own bound").
 //
 // The test's t is sum(e_i z_i) / det, where the z_i are the corners' heights along the ray and the
 // e_i the edge functions of the corners sheared into the ray's frame. Each step adds a few
@@ -18,19 +19,26 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+
+#include <glm/geometric.hpp>
 
 namespace rt {
 
 namespace watertight_detail {
 
-// pbrt's gamma(n): the relative error of n float roundings in a row.
+// pbrt's gamma(n): the relative error of n roundings in a row of T, whose unit roundoff is half
+// its epsilon (2^-24 for float, 2^-53 for double).
+template <class T>
 constexpr double gamma(int n)
 {
-    constexpr double u = 0x1p-24;  // half of float's epsilon
+    constexpr double u = std::numeric_limits<T>::epsilon() / 2.0;
     return (n * u) / (1.0 - n * u);
 }
 
-inline double max3(float a, float b, float c)
+template <class T>
+double max3(T a, T b, T c)
 {
     return std::max(a, std::max(b, c));
 }
@@ -40,54 +48,84 @@ inline double max3(float a, float b, float c)
 // The bound on |t - true t| for `ray` meeting `tri`, in the ray's lengths; 0 for a triangle the
 // ray is parallel to (the test finds no hit there to refuse). The magnitudes are combined in double,
 // where the products of a tiny scene's (1e-15 across: 1e-45 and below) do not underflow to 0.
-inline float watertight_t_error(const Ray& ray, const Triangle& tri)
+template <class T>
+T watertight_t_error(const BasicRay<T>& ray, const BasicTriangle<T>& tri)
 {
+    using std::abs;
     using watertight_detail::gamma;
     using watertight_detail::max3;
     // The test's own frame (EXERCISE 02.5, steps 1-3): kz the ray's longest axis.
-    const vec3 ad = glm::abs(ray.dir);
+    const vec3_t<T> ad = glm::abs(ray.dir);
     const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
     const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;  // the bound is the same for either order
-    if (ray.dir[kz] == 0.0f)
-        return 0.0f;
-    const float Sx = ray.dir[kx] / ray.dir[kz], Sy = ray.dir[ky] / ray.dir[kz], Sz = 1.0f / ray.dir[kz];
-    const vec3 A = tri.a - ray.origin, B = tri.b - ray.origin, C = tri.c - ray.origin;
-    const float Ax = A[kx] - Sx * A[kz], Ay = A[ky] - Sy * A[kz];
-    const float Bx = B[kx] - Sx * B[kz], By = B[ky] - Sy * B[kz];
-    const float Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
-    float U = cross_2d(Cx, Cy, Bx, By), V = cross_2d(Ax, Ay, Cx, Cy), W = cross_2d(Bx, By, Ax, Ay);
-    if (U == 0.0f || V == 0.0f || W == 0.0f) {
+    if (ray.dir[kz] == T(0))
+        return T(0);
+    const T Sx = ray.dir[kx] / ray.dir[kz], Sy = ray.dir[ky] / ray.dir[kz], Sz = T(1) / ray.dir[kz];
+    const vec3_t<T> A = tri.a - ray.origin, B = tri.b - ray.origin, C = tri.c - ray.origin;
+    const T Ax = A[kx] - Sx * A[kz], Ay = A[ky] - Sy * A[kz];
+    const T Bx = B[kx] - Sx * B[kz], By = B[ky] - Sy * B[kz];
+    const T Cx = C[kx] - Sx * C[kz], Cy = C[ky] - Sy * C[kz];
+    T U = cross_2d(Cx, Cy, Bx, By), V = cross_2d(Ax, Ay, Cx, Cy), W = cross_2d(Bx, By, Ax, Ay);
+    if (U == T(0) || V == T(0) || W == T(0)) {
         // 02.5's fallback, followed here too: the test divides by the det of the edge functions
         // recomputed in double. Without it, a nearly collinear triangle whose float edge functions
         // cancel to det = 0 got a bound of 0 while 02.5 hit it at a t that is all rounding (a ray
         // leaving the triangle's own plane found it again 1e-8 to 3e-8 along).
-        U = static_cast<float>(cross_2d<double>(Cx, Cy, Bx, By));
-        V = static_cast<float>(cross_2d<double>(Ax, Ay, Cx, Cy));
-        W = static_cast<float>(cross_2d<double>(Bx, By, Ax, Ay));
+        U = static_cast<T>(cross_2d<double>(Cx, Cy, Bx, By));
+        V = static_cast<T>(cross_2d<double>(Ax, Ay, Cx, Cy));
+        W = static_cast<T>(cross_2d<double>(Bx, By, Ax, Ay));
     }
-    const float det = U + V + W;
-    if (!(det != 0.0f))
-        return 0.0f;
+    const T det = U + V + W;
+    if (!(det != T(0)))
+        return T(0);
 
     // The magnitudes each step combines: sheared x and y, heights along the ray (scaled by Sz, as
     // t is, and unscaled, as the shear multiplies them), and the edge functions.
-    const double max_x = max3(std::abs(Ax), std::abs(Bx), std::abs(Cx));
-    const double max_y = max3(std::abs(Ay), std::abs(By), std::abs(Cy));
-    const double max_z = max3(std::abs(A[kz]), std::abs(B[kz]), std::abs(C[kz]));
-    const double max_zt = std::abs(double(Sz)) * max_z;
-    const double max_e = max3(std::abs(U), std::abs(V), std::abs(W));
+    const double max_x = max3(abs(Ax), abs(Bx), abs(Cx));
+    const double max_y = max3(abs(Ay), abs(By), abs(Cy));
+    const double max_z = max3(abs(A[kz]), abs(B[kz]), abs(C[kz]));
+    const double max_zt = abs(double(Sz)) * max_z;
+    const double max_e = max3(abs(U), abs(V), abs(W));
 
     // Each corner minus the origin (1 rounding), the shear's S (1), its product (1) and difference
     // (1): gamma(5) of the x and z they combine (|S| <= 1, so |S z| <= |z|). The scaled height:
     // the difference, Sz and the product, gamma(3).
-    const double delta_x = gamma(5) * (max_x + 2.0 * max_z);
-    const double delta_y = gamma(5) * (max_y + 2.0 * max_z);
-    const double delta_z = gamma(3) * max_zt;
+    const double delta_x = gamma<T>(5) * (max_x + 2.0 * max_z);
+    const double delta_y = gamma<T>(5) * (max_y + 2.0 * max_z);
+    const double delta_z = gamma<T>(3) * max_zt;
     // An edge function x0 y1 - y0 x1: two products and a difference of inputs with those errors.
-    const double delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const double delta_e = 2.0 * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     // t det = sum(e_i z_i): three products and two sums of errored terms; then divided by det.
-    return static_cast<float>(3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) /
-                              std::abs(double(det)));
+    return static_cast<T>(3.0 * (gamma<T>(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / abs(double(det)));
+}
+
+// Where the float bound cannot decide (a hit nearer than the test's own rounding of t, which grows
+// with the corners' distance from the origin: a floor 1e7 across seen from 1 above it), the test is
+// taken again in double, whose rounding is 2^29 times finer. Its hit is certainly in front of the
+// ray when it lies beyond both its own bound and the slab the origin's float rounding leaves across
+// the plane (a few ulps of its largest coordinate); nearer, it is the surface the ray leaves, or
+// nothing that can be told from it. Returned as float, as the float test would.
+inline std::optional<TriangleHit<float>> hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, Interval range)
+{
+    const BasicRay<double> r{glm::dvec3(ray.origin), glm::dvec3(ray.dir)};
+    const BasicTriangle<double> t{glm::dvec3(tri.a), glm::dvec3(tri.b), glm::dvec3(tri.c)};
+    const std::optional<TriangleHit<double>> hit =
+        hit_triangle_watertight(r, t, BasicInterval<double>{double(range.min), double(range.max)});
+    if (!hit)
+        return std::nullopt;
+    // The origin's own rounding: origin_ulps float steps of its largest coordinate, crossed at the
+    // rate the ray approaches the plane.
+    constexpr double origin_ulps = 4.0;
+    const glm::dvec3 n = glm::cross(t.b - t.a, t.c - t.a);
+    const double approach = std::abs(glm::dot(n, r.dir)) / glm::length(n);
+    const glm::dvec3 o = glm::abs(r.origin);
+    const double slab = origin_ulps * std::numeric_limits<float>::epsilon() * std::max(o.x, std::max(o.y, o.z));
+    if (!(hit->t > watertight_t_error(r, t)) || !(hit->t * approach > slab))
+        return std::nullopt;
+    const TriangleHit<float> h{static_cast<float>(hit->t), static_cast<float>(hit->beta), static_cast<float>(hit->gamma)};
+    if (!range.surrounds(h.t))
+        return std::nullopt;
+    return h;
 }
 
 }  // namespace rt

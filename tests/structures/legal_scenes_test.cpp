@@ -210,6 +210,50 @@ TEST_CASE("a ray leaving a triangle never finds it again, however large the tria
     }
 }
 
+TEST_CASE("a floor 2e7 across is drawn from 1 to 1e6 above it, by brute force and every structure", "[structures]")
+{
+    // Once: seen from 1 above, chapter 04 on drew nothing of it. The float test's bound on t grows
+    // with the corners' distance from the eye (1e7), and refused every hit nearer than it, however
+    // certainly in front; now double decides there (watertight_error.hpp).
+    const Triangle tri{{-1e7f, 0, 1e7f}, {1e7f, 0, 1e7f}, {0, 0, -1e7f}};
+    LitScene floor = with_material();
+    floor.add_triangle(tri, 0);
+    for (const float height : {1.0f, 3.0f, 100.0f, 1e4f, 1e6f}) {
+        const point3 eye(0, height, 0);
+        Rng rng(43, 1);
+        int misses = 0, far_off = 0;
+        std::string first;
+        for (int k = 0; k < 2000; ++k) {
+            // A point of the floor inside it (its edges pass 4.4e6 from the origin), 0.5 to 3e6 from
+            // the eye's foot: the nearest rays look steeply down, the farthest graze it.
+            const float r = std::exp2(-1.0f + 22.5f * rng.next_float());
+            const float angle = 6.2831853f * rng.next_float();
+            const point3 target(r * std::cos(angle), 0, r * std::sin(angle));
+            const vec3 to = target - eye;
+            const Ray ray{eye, glm::normalize(to)};
+            const std::optional<Hit> hit = closest_hit(ray, floor, Interval{0.0f, infinity});
+            // Where the float test decides, its t is as good as its own bound on t's rounding, which
+            // grows with the corners' 1e7 (0.1 at 600 from an eye 100 up); where double decides, better.
+            const float distance = glm::length(to);
+            const float within = std::max(1e-4f * distance, watertight_t_error(ray, tri));
+            const bool wrong = !hit || std::abs(hit->t - distance) > within;
+            misses += hit ? 0 : 1;
+            far_off += hit && wrong ? 1 : 0;
+            if (wrong && first.empty())
+                first = show(ray) + " toward " + show(target) + ": " + (hit ? "t = " + std::to_string(hit->t) : "no hit") +
+                        ", the floor is " + std::to_string(distance) + " away";
+        }
+        INFO("the eye " << height << " above the floor: " << misses << " of 2000 rays toward it missed it, " << far_off
+                        << " hit it far from where it is; the first: " << first);
+        CHECK(misses == 0);
+        CHECK(far_off == 0);
+        NffView view;
+        view.from = eye;
+        view.at = point3(0, 0, 100.0f * height);
+        check("a floor 2e7 across seen from " + std::to_string(height) + " above", floor, view, 200);
+    }
+}
+
 TEST_CASE("a floor 2e5 across under a camera 11 above it answers as brute force through every structure", "[structures]")
 {
     LitScene floor = with_material();
