@@ -122,7 +122,7 @@ if(WIN32)
     fail("grade_01 after an edit should say to rebuild it first (${rc}):\n${regrade}")
   endif()
 elseif(NOT rc EQUAL 0 OR NOT regrade MATCHES "changed after this grader was built: rebuilding it first"
-       OR NOT regrade MATCHES "01\\.2 +14 / 14")
+       OR NOT regrade MATCHES "01\\.2 +19 / 19")
   fail("grade_01 after an edit should rebuild and give 01.2 full points (${rc}):\n${regrade}")
 endif()
 

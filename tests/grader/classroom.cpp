@@ -14,7 +14,6 @@ namespace {
 
 std::string chapter_of(const CaseResult& r) { return r.number.substr(0, 2); }
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
 std::string json_string(const std::string& s)
 {
@@ -38,20 +37,21 @@ std::string json_string(const std::string& s)
     return out.str();
 }
 
-// A chapter line (its number is the chapter's alone) that is not the untouched stubs: the chapter
-// did not compile, or its file is missing.
-bool did_not_build(const CaseResult& r)
-{
-    return r.number.size() == 2 && r.name.find("is still the handed-out stubs") == std::string::npos;
-}
-
+// A case that could not run to a verdict is an error to Classroom (a chapter that did not compile
+// or has no file, a crash, a stop), a failed check a failure.
 std::string status_of(const CaseResult& r)
 {
-    if (r.passed)
+    switch (r.status) {
+    case CaseStatus::passed:
         return "pass";
-    if (did_not_build(r) || starts_with(r.output, crashed_mark) || starts_with(r.output, stopped_mark))
+    case CaseStatus::crashed:
+    case CaseStatus::stopped:
+    case CaseStatus::does_not_compile:
+    case CaseStatus::no_file:
         return "error";
-    return "fail";
+    default:
+        return "fail";
+    }
 }
 
 // What a student types to grade that case's exercise again (or rebuild its chapter).
@@ -91,7 +91,7 @@ std::string result_json(const std::vector<CaseResult>& results, size_t message_l
     bool all_passed = true, any_error = false;
     for (const CaseResult& r : results) {
         max_score += r.max_score;
-        all_passed = all_passed && r.passed;
+        all_passed = all_passed && r.passed();
         any_error = any_error || status_of(r) == "error";
     }
     std::ostringstream out;
@@ -101,7 +101,7 @@ std::string result_json(const std::vector<CaseResult>& results, size_t message_l
         const CaseResult& r = results[k];
         out << (k ? ", " : "") << "{\"name\": " << json_string(r.number + " " + r.name) << ", \"status\": \""
             << status_of(r) << "\", \"score\": " << r.score;
-        if (!r.passed)
+        if (!r.passed())
             out << ", \"message\": "
                 << json_string(std::to_string(r.score) + " of " + std::to_string(r.max_score) + " points. " +
                                cut_message(r.output, message_limit));
@@ -209,7 +209,7 @@ bool append_step_summary(const std::string& path, const std::vector<CaseResult>&
         for (const auto& [number, points] : by_exercise)
             out << "| " << number << " | " << points.first << " / " << points.second << " |\n";
         for (const CaseResult* r : cases) {
-            if (r->passed)
+            if (r->passed())
                 continue;
             out << "\n**FAIL " << r->number << " " << r->score << "/" << r->max_score << "** " << md(r->name) << '\n';
             if (r->output.empty())
