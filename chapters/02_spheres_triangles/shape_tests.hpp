@@ -37,11 +37,12 @@ inline std::optional<float> hit_sphere(const Ray& ray, const Sphere& sphere, Int
 inline std::optional<TriangleHit<float>> hit_triangle_bounded(const Ray& ray, const Triangle& tri, Interval range)
 {
     const std::optional<TriangleHit<float>> hit = hit_triangle_watertight(ray, tri, range);
-    if (!hit)
-        return std::nullopt;
-    if (hit->t > watertight_t_error(ray, tri))
+    if (hit && hit->t > watertight_t_error(ray, tri))
         return TriangleHit<float>{hit->t, hit->beta, hit->gamma};
-    return hit_triangle_decided_in_double(ray, tri, range);
+    TriangleHit<float> near;
+    if (hit && hit_triangle_decided_in_double(ray, tri, range, near))
+        return TriangleHit<float>{near.t, near.beta, near.gamma};
+    return std::nullopt;
 }
 
 // One counted triangle test, its hit written into `hit`: true when the ray hits. Each test's

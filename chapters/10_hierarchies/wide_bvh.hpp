@@ -301,10 +301,10 @@ private:
             ObjectHit hit{h.t[i], k, h.V[i] / h.det[i], h.W[i] / h.det[i]};
             if (bounded && !(h.t[i] > watertight_t_error(ray, tri))) {
                 // As hit_triangle_bounded: double decides where the bound cannot.
-                const std::optional<TriangleHit<float>> near = hit_triangle_decided_in_double(ray, tri, closer_than(range, best, k));
-                if (!near)
+                TriangleHit<float> near;
+                if (!hit_triangle_decided_in_double(ray, tri, closer_than(range, best, k), near))
                     return false;
-                hit = {near->t, k, near->beta, near->gamma};
+                hit = {near.t, k, near.beta, near.gamma};
             }
             if (objects.one_sided && (*objects.one_sided)[objects.ref(k).index] && glm::dot(face_normal(tri), ray.dir) > 0.0f)
                 return false;  // its back
