@@ -149,3 +149,61 @@ GRADED_TEST("fresnel_dielectric: leaving at ior 2 where sin^2(theta_t) is exactl
     CHECK(R >= 0.99f);
     CHECK(R <= 1.0f);
 }
+
+GRADED_TEST("fresnel_dielectric: 0.02 to 0.03 degrees from grazing (cos_i 3.5e-4, 5e-4) glass (ior 1.5) reflects nearly all, ior 1 almost nothing, not everything", "03.3", 1)
+{
+    // ior = 1 is no interface: sin^2(theta_t) = 1 - cos_i^2 stays below 1 (in float too, for these
+    // cosines), so this is no total internal reflection, and R is near 0 (within 0.01: the float
+    // form 1 - cos_i^2 is coarse this close to grazing). eta = n1 / n2 is exactly 1 here; an eta a
+    // rounding above 1 pushes sin^2(theta_t) to 1 and answers "everything".
+    for (const float c : {3.5e-4f, 5e-4f})
+        for (const float sign : {1.0f, -1.0f}) {
+            const float R = fresnel_dielectric(sign * c, 1.0f);
+            INFO(query(sign * c, 1.0f) << ": got " << R << ", expected about 0 (at most 0.01): ior 1 is no interface");
+            REQUIRE(std::isfinite(R));
+            CHECK(R >= 0.0f);
+            CHECK(R <= 0.01f);
+            // Glass at the same angle: nearly everything reflects (R = 0.998 and 0.997).
+            const float R_glass = fresnel_dielectric(sign * c, 1.5f);
+            INFO(query(sign * c, 1.5f) << ": got " << R_glass << ", expected at least 0.99 (near grazing)");
+            CHECK(R_glass >= 0.99f);
+            CHECK(R_glass <= 1.0f);
+        }
+}
+
+GRADED_TEST("fresnel_dielectric: leaving at ior 2 one float step inside the edge (sin^2(theta_t) = 1 - 3e-7), R is below 1 (about 0.997): no total reflection", "03.3", 1)
+{
+    // c = 0x1.bb67b0p-1, one float step steeper than 0x1.bb67aep-1 (where sin^2(theta_t) is exactly
+    // 1): exactly, sin^2(theta_t) = 4 (1 - c^2) = 1 - 3.05e-7, and in float 4 (1 - c^2) = 1 - 2.4e-7,
+    // so cos(theta_t) is about 5e-4 and R = 0.9969 (0.9972 in float). "Exactly 1" belongs to total
+    // internal reflection only; 1 - cos_i^2 computed a rounding too large tips this ray over the edge.
+    const float c = 0x1.bb67b0p-1f;
+    const float R = fresnel_dielectric(-c, 2.0f);
+    INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+         << ", expected about 0.997 (at least 0.99, at most 0.999): sin^2(theta_t) is below 1 there");
+    REQUIRE(std::isfinite(R));
+    CHECK(R >= 0.99f);
+    CHECK(R <= 0.999f);
+}
+
+STABILITY_TEST("fresnel_dielectric: leaving at ior 2 just inside the critical angle, where cos_i^2 is exact in float, R within 5e-7 of the double answer", "03.3", 1)
+{
+    // cos_i with 12 significant bits: cos_i^2, 1 - cos_i^2 and 4 (1 - cos_i^2) are exact in float,
+    // so sin^2(theta_t) is exact and only cos_t = sqrt(1 - sin^2(theta_t)) and the two fractions
+    // round. cos_t is small here (0.05 to 0.09), and R moves fast with it: an error of one float
+    // step of 1 in 1 - sin^2(theta_t) moves R by 2e-6 to 7e-6. Float's own answer is within 1e-7.
+    for (const float c : {0x1.bb8p-1f, 0x1.bbcp-1f, 0x1.bcp-1f})
+        check_reflectance(-c, 2.0f, 5e-7);
+}
+
+GRADED_TEST("fresnel_dielectric: at grazing incidence from outside (cos_i = +0 or -0) exactly 1, never above 1", "03.3", 1)
+{
+    // cos_i = 0: r_perp = (0 - cos_t) / (0 + cos_t) = -1 and r_par = (0 - eta cos_t) / (0 + eta cos_t)
+    // = -1 exactly, so R = (1 + 1) / 2 = 1 exactly: all the light, and not a rounding more.
+    for (const float ior : {1.333f, 1.5f, 2.4f, 1.0f})
+        for (const float cos_i : {0.0f, -0.0f}) {
+            const float R = fresnel_dielectric(cos_i, ior);
+            INFO(query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
+            CHECK(R == 1.0f);
+        }
+}

@@ -115,3 +115,47 @@ GRADED_TEST("fresnel_schlick: leaving at ior 2 where sin^2(theta_t) is exactly 1
     CHECK(R >= 0.99f);
     CHECK(R <= 1.0f);
 }
+
+GRADED_TEST("fresnel_schlick: at ior 1 (no denser side, R0 = 0) a ray 0.02 to 0.03 degrees from grazing gets (1 - cos_i)^5, not total reflection", "03.4", 1)
+{
+    // At ior 1 neither side is denser: c = cos_i and R = (1 - cos_i)^5, 0.9983 and 0.9975 here,
+    // not the 1 of total internal reflection (an eta a rounding above 1 takes the "denser side"
+    // branch, where eta^2 (1 - cos_i^2) rounds to 1 this close to grazing).
+    for (const float c : {3.5e-4f, 5e-4f})
+        for (const float sign : {1.0f, -1.0f})
+            check_schlick(sign * c, 1.0f, 1e-6);
+}
+
+GRADED_TEST("fresnel_schlick: leaving an index one float step above 1 (1 + 2^-23) beyond its critical angle (cos_i 2e-4 < 4.9e-4), exactly 1", "03.4", 1)
+{
+    // ior = 1 + 2^-23 is denser than outside, however little: its critical angle has cosine
+    // sqrt(1 - 1 / ior^2) = 4.9e-4, and a ray leaving at cos_i = 2e-4 has sin^2(theta_t) = 1 + 2e-7
+    // (in float, 1 + 1.2e-7 or more): total internal reflection, R = 1, not (1 - cos_i)^5 = 0.999.
+    const float ior = std::nextafter(1.0f, 2.0f);
+    const float R = fresnel_schlick(-2e-4f, ior);
+    INFO(query(-2e-4f, ior) << " (ior = 1 + 2^-23): got " << R
+         << ", expected exactly 1 (total internal reflection: eta = ior > 1, the denser side's rule)");
+    CHECK(R == 1.0f);
+}
+
+STABILITY_TEST("fresnel_schlick: leaving at ior 2 just inside the critical angle, where cos_i^2 is exact in float, R within 5e-7 of the double answer", "03.4", 1)
+{
+    // cos_i with 12 significant bits: cos_i^2, 1 - cos_i^2 and sin^2(theta_t) = 4 (1 - cos_i^2) are
+    // exact in float, so only c = cos_t = sqrt(1 - sin^2(theta_t)) and the polynomial round. c is
+    // small here (0.05 to 0.09) and R moves fast with it: an error of one float step of 1 in
+    // 1 - sin^2(theta_t) moves R by 8e-6 to 2.6e-5. Float's own answer is within 1.4e-7.
+    for (const float c : {0x1.bb8p-1f, 0x1.bbcp-1f, 0x1.bcp-1f})
+        check_schlick(-c, 2.0f, 5e-7);
+}
+
+GRADED_TEST("fresnel_schlick: at grazing incidence (cos_i = +0 or -0) exactly 1, never above 1", "03.4", 1)
+{
+    // c = 0 makes 1 - c exactly 1, (1 - c)^5 exactly 1, and R0 + (1 - R0) rounds to exactly 1 in
+    // float for any R0 in [0, 1]: a reflectance is a share of the light, never more than all of it.
+    for (const float ior : {1.333f, 1.5f, 2.4f, 1.0f / 1.333f})
+        for (const float cos_i : {0.0f, -0.0f}) {
+            const float R = fresnel_schlick(cos_i, ior);
+            INFO(query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
+            CHECK(R == 1.0f);
+        }
+}

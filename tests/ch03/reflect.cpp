@@ -91,3 +91,25 @@ STABILITY_TEST("reflect: unit length kept and never a NaN, grazing (r = v), head
         check_against_reference(a, b, 1e-6);
     }
 }
+
+GRADED_TEST("reflect: off a mirror facing along an axis, exactly that coordinate of v changes sign, to the bit", "03.1", 1)
+{
+    // With n a unit axis, v.n is one coordinate of v, 2 (v.n) n is exact, and v - 2 (v.n) n turns
+    // that coordinate around without a rounding: head-on, -v itself; obliquely, the other two kept.
+    const vec3 vs[] = {vec3(0, 0, -1), glm::normalize(vec3(1, -2, 3)), glm::normalize(vec3(-0.3f, 0.7f, -0.2f)),
+                       vec3(0.6f, -0.8f, 0.0f)};
+    for (const vec3& v : vs)
+        for (int axis = 0; axis < 3; ++axis)
+            for (const float sign : {1.0f, -1.0f}) {
+                vec3 n(0.0f);
+                n[axis] = sign;
+                if (v[axis] == 0.0f)
+                    continue;
+                vec3 want = v;
+                want[axis] = -v[axis];
+                const vec3 r = reflect(v, n);
+                INFO(query(v, n) << ": got " << show(r) << ", expected exactly " << show(want)
+                                 << " (only the coordinate along n reversed, no rounding: each step is exact)");
+                CHECK(r == want);
+            }
+}

@@ -294,3 +294,20 @@ STABILITY_TEST("refract: a grazing ray with v.n = -0 (the sign bit set) enters, 
     REQUIRE(t);
     CHECK(t->y < 0.0f);
 }
+
+STABILITY_TEST("refract: at ior 1 a ray whose cos^2(theta_t) is the least positive float (v.n = 1.25 * 2^-75) still gets through, either side", "03.2", 1)
+{
+    // cos^2(theta_t) = cos_i^2 at ior 1; with cos_i = 1.25 * 2^-75 that rounds to 2^-149, the least
+    // positive float (a denormal): one float step above the "<= 0" of total internal reflection, so
+    // a ray gets out, undeflected. Nothing here needs more than float's own range.
+    const float c = std::ldexp(1.25f, -75);
+    const vec3 up{0, 1, 0};
+    for (const float side : {-1.0f, 1.0f}) {  // -1: entering (v.n < 0); +1: leaving (v.n > 0)
+        const vec3 v{1.0f, side * c, 0.0f};
+        const std::optional<vec3> t = refract(v, up, 1.0f);
+        INFO(query(v, up, 1.0f) << ": v.n = " << std::setprecision(9) << glm::dot(v, up) << ", cos_i^2 = "
+             << c * c << " (> 0); got " << optics::show(t) << ", expected v itself, to 1e-6");
+        REQUIRE(t.has_value());
+        CHECK(glm::length(*t - v) <= 1e-6f);
+    }
+}

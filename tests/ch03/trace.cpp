@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 using namespace rt;
 using namespace rt::grader;
@@ -304,4 +305,86 @@ GRADED_TEST("trace: a ray that misses sees background(scene, ray.dir), the sky i
          << show(sky_reflected) << ": " << show(expected));
     CHECK(near(mirrored.colour, expected));
     CHECK(mirrored.rays.reflected == 1);
+}
+
+GRADED_TEST("trace: a glass share as small as the least float (transparency 2^-149) traces its refracted ray, with min_weight 0 and with min_weight 2^-149 (at least)", "03.5", 1)
+{
+    // "Only when its k > 0", one float step above 0: a pane of glass with transparency 2^-149 (a
+    // denormal), met head-on, has k_t = 2^-149 (1 - F) = 2^-149 > 0 (F = 0.04): one refracted ray,
+    // with min_weight 0 and with min_weight 2^-149 exactly (its weight is at least that). Its mirror
+    // share 2^-149 F rounds to 0: no reflected ray.
+    WhittedScene scene = empty_scene();
+    const color albedo{0.6f, 0.5f, 0.3f};
+    Material glass;
+    glass.transparency = std::numeric_limits<float>::denorm_min();
+    glass.ior = 1.5f;
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
+    for (const float min_weight : {0.0f, std::numeric_limits<float>::denorm_min()}) {
+        TraceSettings settings;
+        settings.min_weight = min_weight;
+        const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+        INFO(faint.report << "; glass of transparency 2^-149 (k_t = 2^-149 > 0, its weight 2^-149 >= min_weight) met "
+                             "head-on: expected one refracted ray and no reflected one");
+        CHECK(faint.rays.refracted == 1);
+        CHECK(faint.rays.reflected == 0);
+    }
+}
+
+GRADED_TEST("trace: with min_weight 0 a mirror share as small as the least float (mirror 2^-149) still traces its reflected ray", "03.5", 1)
+{
+    // "Only when its k > 0", one float step above 0: a mirror with k_s = 2^-149 (a denormal) and
+    // min_weight 0 sends its one reflected ray; it adds next to nothing to the colour.
+    WhittedScene scene = empty_scene();
+    const color albedo{0.6f, 0.5f, 0.3f};
+    Material faint_mirror;
+    faint_mirror.mirror = std::numeric_limits<float>::denorm_min();
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, faint_mirror);
+    TraceSettings settings;
+    settings.min_weight = 0.0f;
+    const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    INFO(faint.report << "; a mirror of k_s = 2^-149 (> 0), min_weight 0: expected one reflected ray and no "
+                         "refracted one");
+    CHECK(faint.rays.reflected == 1);
+    CHECK(faint.rays.refracted == 0);
+}
+
+GRADED_TEST("trace: with min_weight 0 a glass share that rounds to exactly 0 (transparency 2^-149, ior 10 head-on) traces no refracted ray", "03.5", 1)
+{
+    // Head-on at ior 10, F = (9 / 11)^2 = 0.669: k_t = 2^-149 (1 - F) rounds to 0 and is no share
+    // at all (k > 0 is the rule, and 0 >= min_weight = 0 must not let it through), while
+    // k_r = 2^-149 F rounds to 2^-149 > 0: one reflected ray, no refracted one.
+    WhittedScene scene = empty_scene();
+    const color albedo{0.6f, 0.5f, 0.3f};
+    Material glass;
+    glass.transparency = std::numeric_limits<float>::denorm_min();
+    glass.ior = 10.0f;
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
+    TraceSettings settings;
+    settings.min_weight = 0.0f;
+    const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    INFO(faint.report << "; glass of transparency 2^-149 and ior 10 met head-on (k_t rounds to 0, k_r to 2^-149), "
+                         "min_weight 0: expected one reflected ray and no refracted one");
+    CHECK(faint.rays.refracted == 0);
+    CHECK(faint.rays.reflected == 1);
+}
+
+GRADED_TEST("trace: a refracted ray carries weight times k_t: through two panes of glass (k_t = 0.48) with min_weight 0.3 only the first refracts", "03.5", 1)
+{
+    // Two panes of glass (transparency 0.5, ior 1.5) across the ray, met head-on: F = 0.04, so
+    // k_t = 0.48 and k_r = 0.02. The first refracted ray weighs 0.48 >= 0.3 and is traced; at the
+    // second pane its own refracted ray would weigh 0.48 * 0.48 = 0.23 < 0.3: not traced.
+    WhittedScene scene = empty_scene();
+    const color albedo{0.6f, 0.5f, 0.3f};
+    Material glass;
+    glass.transparency = 0.5f;
+    glass.ior = 1.5f;
+    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
+    add_square(scene, {0, 0, -7}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
+    TraceSettings settings;
+    settings.min_weight = 0.3f;
+    const Traced panes = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    INFO(panes.report << "; two glass panes, k_t = 0.48 each, min_weight 0.3: expected one refracted ray (weight "
+                         "0.48) and not a second (0.23), no reflected ray (0.02)");
+    CHECK(panes.rays.refracted == 1);
+    CHECK(panes.rays.reflected == 0);
 }
