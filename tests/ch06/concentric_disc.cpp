@@ -2,6 +2,7 @@
 #include "tests/ch06/describe.hpp"
 
 #include <array>
+#include <iomanip>
 #include <vector>
 
 using namespace rt;
@@ -41,6 +42,26 @@ GRADED_TEST("the square's centre, the middles of its sides and its corners land 
     check_maps_to({0.0f, 1.0f}, {-h, h}, "the corner (0, 1)");
     check_maps_to({0.0f, 0.0f}, {-h, -h}, "the corner (0, 0)");
     check_maps_to({1.0f, 0.0f}, {h, -h}, "the corner (1, 0)");
+}
+
+GRADED_TEST("the middles of the square's sides and its corners land on the rim, not one float step outside the disc; the centre on exactly (0, 0)", "06.1", 1)
+{
+    // At these points a and b are exactly -1, 0 or 1, and r is exactly 1 (or 0 at the centre): the
+    // point is on the rim up to cos and sin's own rounding (some 1e-15 of the distance in double),
+    // never 1.0000001 away, which is outside the disc.
+    const point2 rim[] = {{1.0f, 0.5f}, {0.0f, 0.5f}, {0.5f, 1.0f}, {0.5f, 0.0f},
+                          {1.0f, 1.0f}, {0.0f, 1.0f}, {0.0f, 0.0f}, {1.0f, 0.0f}};
+    for (const point2 square : rim) {
+        const point2 got = concentric_disc(square);
+        const double from_centre = glm::length(glm::dvec2(got));
+        INFO("concentric_disc" << show(square) << " gave " << show(got) << ", " << std::setprecision(17) << from_centre
+             << " from the centre; expected 1 (the rim) and not a float step (1.2e-7) past it: never outside the disc");
+        CHECK(from_centre <= 1.0 + 1e-12);
+        CHECK(from_centre >= 1.0 - map_tolerance);
+    }
+    const point2 centre = concentric_disc({0.5f, 0.5f});
+    INFO("concentric_disc(0.5, 0.5), the square's centre, gave " << show(centre) << "; expected exactly (0, 0): r is 0 there");
+    CHECK((centre.x == 0.0f && centre.y == 0.0f));
 }
 
 GRADED_TEST("each square ring around the centre becomes the circle of its half-side, walked at an even pace", "06.1", 2)

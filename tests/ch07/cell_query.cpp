@@ -58,6 +58,18 @@ GRADED_TEST("closest_in_cell: keeps the nearest hit inside the cell, whatever or
     check({{{2}, {}, {}}, 0, {1.8f, infinity}, {}, false, -1, 0, "sphere 2 spans t = 1.3 to 1.7, before the range"});
 }
 
+GRADED_TEST("closest_in_cell: only the current cell's own list is tested: an empty cell changes nothing, even when the next cell lists an object hit inside it", "07.6", 2)
+{
+    // A cell's objects are object_index[cell_start[p]] up to, not including, cell_start[p + 1]:
+    // the entry at cell_start[p + 1] is the next cell's first object.
+    check({{{}, {2}, {}}, 0, all, {}, false, -1, 0,
+           "cell 0 lists nothing; sphere 2 (t = 1.3, before cell 0's exit at t = 2) is listed in cell 1 only"});
+    check({{{}, {}, {1}}, 1, all, {}, false, -1, 0,
+           "cell 1 lists nothing; sphere 1 (t = 1.75, before cell 1's exit at t = 3) is listed in cell 2 only"});
+    check({{{1}, {2}, {}}, 0, all, {}, true, 1, t_of(1),
+           "cell 0 lists sphere 1 (t = 1.75); sphere 2 (t = 1.3, nearer), listed in cell 1 only, is not cell 0's"});
+}
+
 GRADED_TEST("closest_in_cell: a hit beyond the cell is not kept; one exactly on its far boundary is", "07.6", 4)
 {
     check({{{0}, {}, {}}, 0, all, {}, false, -1, 0,

@@ -65,6 +65,28 @@ GRADED_TEST("grid_resolution: at least 1 and at most max_cells_per_axis cells pe
     CHECK(wide == cell3(2048, 2048, 2048));
 }
 
+GRADED_TEST("grid_resolution: at the count's boundary, 1 object gets its lambda cells; 0 objects one cell, whatever the box", "07.1", 2)
+{
+    // One object is a scene like any other: lambda 8 asks for 8 cells, side cbrt(1 / 8) = 0.5.
+    check(box({0, 0, 0}, {1, 1, 1}), 1, 8.0f, {2, 2, 2}, "1 object and lambda 8: 8 cells of side 0.5");
+    check(box({0, 0, 0}, {4, 0, 4}), 1, 16.0f, {4, 1, 4}, "a floor, 1 object and lambda 16: 16 cells of side 1");
+    // No objects is one cell before any division: a box 1e-20 across has a volume of 1e-60, which
+    // float rounds to 0, and 0 / (lambda 0) is no number of cells.
+    check(box({0, 0, 0}, {1e-20f, 1e-20f, 1e-20f}), 0, 1.0f, {1, 1, 1},
+          "no objects in a box 1e-20 across (its volume, 1e-60, is 0 in float): one cell");
+}
+
+GRADED_TEST("grid_resolution: an infinite extent (an unbounded plane's box) makes cells of infinite side: one cell, a flat axis beside it included", "07.1", 2)
+{
+    // V = infinity: s = infinity, and every axis, infinite or not, is no wider than a cell. A flat
+    // axis (extent 0) is left out from the start: it must not multiply the infinite volume by 0.
+    const float inf = infinity;
+    check(box({0, 0, 0}, {inf, 1, 0}), 8, 1.0f, {1, 1, 1}, "x infinite, y 1, z flat (0): one cell");
+    check(box({0, 0, 0}, {0, inf, 1}), 8, 1.0f, {1, 1, 1}, "x flat (0), y infinite, z 1: one cell");
+    check(box({0, 0, 0}, {1, 0, inf}), 8, 1.0f, {1, 1, 1}, "x 1, y flat (0), z infinite: one cell");
+    check(box({0, 0, 0}, {2, 0, 2}), 16, 1.0f, {4, 1, 4}, "a finite floor 2 x 2 beside them keeps its 16 cells of side 0.5");
+}
+
 GRADED_TEST("grid_resolution: axes are dropped until none is thinner than a cell, however many rounds that takes", "07.1", 3)
 {
     // Extents 10 x 1 x 0.5 and 8 cells: the cube root gives s = cbrt(5 / 8) = 0.85, so z (0.5) is

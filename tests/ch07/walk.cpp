@@ -126,6 +126,22 @@ STABILITY_TEST("start_walk: a zero or -0 direction component never steps that ax
     check_missed({{1, 0.5f, 0.5f}, {0, 0, 0}}, all, "no direction at all");
 }
 
+GRADED_TEST("start_walk: the least float above 0 (a denormal, 1.4e-45) is no zero: that axis steps with its sign, its first boundary some 3.5e44 away", "07.4", 2)
+{
+    // The contract tests dir[a] != 0: no threshold. A component of 1.4e-45 (the least float above 0)
+    // moves the ray across y = 1 at t = 0.5 / 1.4e-45, about 3.5e44: in double that is a number,
+    // rounded to float it is infinity, so t_max[1] is infinity and x decides t_end.
+    const float tiny = std::numeric_limits<float>::denorm_min();
+    const double d = tiny;
+    check_start({{0.5f, 0.5f, 0.5f}, {1, tiny, 0}}, all,
+                {0, {4, 2, 0}, {0.5, 0.5 / d, inf}, {1, 1 / d, inf}, 0, 3.5f, inf},
+                "from cell (0, 0, 0), y going up by 1.4e-45: step_p[1] = +2, t_first[1] = (1 - 0.5) / 1.4e-45, "
+                "t_delta[1] = 1 / 1.4e-45; x reaches the face x = 4 first, at t = 3.5");
+    check_start({{0.5f, 1.5f, 0.5f}, {1, -tiny, 0}}, all,
+                {2, {4, -2, 0}, {0.5, 0.5 / d, inf}, {1, 1 / d, inf}, 0, 3.5f, inf},
+                "from cell (0, 1, 0), y going down by 1.4e-45: step_p[1] = -2, t_first[1] = (1 - 1.5) / -1.4e-45");
+}
+
 STABILITY_TEST("start_walk: an origin on a boundary going down starts in the cell above and leaves it at once", "07.4", 3)
 {
     check_start({{2, 0.5f, 0.5f}, {-1, 0, 0}}, all,

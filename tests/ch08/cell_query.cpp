@@ -140,3 +140,29 @@ GRADED_TEST("closest_in_cell_mailboxed: only hits inside the query's range count
     CHECK(!none);
     CHECK(short_range.object == -1);
 }
+
+GRADED_TEST("closest_in_cell_mailboxed: only the current cell's own list is asked: an empty cell changes nothing and tests nothing, even when the next cell lists an object hit inside it", "08.3", 2)
+{
+    // A cell's objects are object_index[cell_start[p]] up to, not including, cell_start[p + 1]:
+    // the entry at cell_start[p + 1] is the next cell's first object. Sphere 2 (t = 1.3, before cell
+    // 0's exit at t = 2) is listed in cell 1 only.
+    const Grid grid = grid_of({{}, {2}, {}});
+    Mailboxes m = fresh();
+    ObjectHit best;
+    const std::uint64_t tests_before = counter(Counter::intersection_tests);
+    const bool got = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
+    const std::uint64_t tests = counter(Counter::intersection_tests) - tests_before;
+    INFO("08.3: cell 0 lists nothing, cell 1 lists sphere 2 (hit at t = 1.3): in cell 0 returned " << std::boolalpha
+         << got << " with " << show(best) << " after " << tests << " intersection tests, sphere 2's mailbox holding ray "
+         << m.box[2].ray << "; expected false, no hit, no test and sphere 2's mailbox untouched (0): cell 0 has no objects");
+    CHECK(!got);
+    CHECK(best.object == -1);
+    CHECK(tests == 0);
+    CHECK(m.box[2].ray == 0u);
+    ObjectHit own;
+    const bool found = closest_in_cell_mailboxed(grid, walk_in(1), m, 1, ray, all, objects(), own);
+    INFO("08.3: then in cell 1, which lists sphere 2: returned " << found << " with " << show(own)
+         << "; expected true with sphere 2 at t = 1.3");
+    CHECK(found);
+    CHECK(own.object == 2);
+}
