@@ -204,3 +204,25 @@ GRADED_TEST("bvh_query: a direction of 0 or -0 along the node's axis is not posi
         CHECK(nodes == 3);
     }
 }
+
+GRADED_TEST("bvh_query: the any-hit query answers with the first object it hits, at once, though a nearer one follows in the leaf",
+            "10.4", 1)
+{
+    // One leaf holding both spheres, sphere 1 (x = 5) listed before sphere 0 (x = 1): along +x the
+    // first object tested is hit, and any-hit stops there; only a closest-hit query goes on to
+    // sphere 0.
+    Bvh b;
+    b.nodes = {{{0.5f, -0.5f, -0.5f}, 0, {5.5f, 0.5f, 0.5f}, 2, 0}};
+    b.object_index = {1, 0};
+    const Ray ray{{-3, 0, 0}, {1, 0, 0}};
+    ObjectHit hit;
+    reset_counters();
+    const bool any = bvh_query(b, ray, {0.0f, infinity}, two_objects(), true, hit);
+    const std::uint64_t tests = counter(Counter::intersection_tests);
+    INFO("10.4: any-hit, " << show(ray) << ", one leaf listing sphere 1 (x = 5) before sphere 0 (x = 1): got "
+         << answer(any, hit) << " after " << tests << " tests; expected sphere 1 after 1 test: the first object hit "
+         "ends an any-hit query at once, nearer or not");
+    CHECK(any);
+    CHECK(hit.object == 1);
+    CHECK(tests == 1);
+}
