@@ -4,6 +4,7 @@
 #include "tests/ch07/describe.hpp"
 
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 using namespace rt;
@@ -13,15 +14,20 @@ namespace {
 
 Bounds box(const point3& lo, const point3& hi) { return {lo, hi}; }
 
-void check_cost(const Bounds& parent, const Bounds& l, int nl, const Bounds& r, int nr, float expected, const char* why)
+void check_cost(const Bounds& parent, const Bounds& l, int nl, const Bounds& r, int nr, float expected, const char* why,
+                bool exact = false)
 {
     std::ostringstream call;
     call << "sah_cost(parent " << show(parent) << ", left " << show(l) << " with " << nl << ", right " << show(r) << " with "
          << nr << ")";
     const WorkingOn on([&] { return call.str(); });
     const float got = sah_cost(parent, l, nl, r, nr);
-    INFO(call.str() << ": got " << got << ", expected " << expected << ": " << why);
-    CHECK(std::abs(got - expected) <= 1e-6f * std::max(1.0f, expected));
+    INFO(call.str() << ": got " << std::setprecision(9) << got << ", expected " << expected << (exact ? " exactly" : "")
+                    << ": " << why);
+    if (exact)
+        CHECK(got == expected);
+    else
+        CHECK(std::abs(got - expected) <= 1e-6f * std::max(1.0f, expected));
 }
 
 }  // namespace
@@ -40,6 +46,22 @@ STABILITY_TEST("sah_cost: a parent of no area (every object at one point) gives 
 {
     const Bounds point = box({1, 1, 1}, {1, 1, 1});
     check_cost(point, point, 2, point, 3, 0.125f + 5, "no area: the children's shares are 1");
+    // A share of exactly 1: 1000 and 3000 objects cost 4000.125 to the bit (a share a float step
+    // above 1 would cost 4000.1255).
+    check_cost(point, point, 1000, point, 3000, 0.125f + 4000, "no area: the children's shares are exactly 1", true);
+}
+
+GRADED_TEST("sah_cost: a parent of the least area a float holds is not a parent of no area: its children share by area",
+            "10.1", 1)
+{
+    // A sliver 1 long, the least float above 0 wide, and flat: its half area is that least float
+    // (1.4e-45), which is more than no area. The sliver itself as a child has a share of 1; the
+    // segment along its length (no area) a share of 0, not the 1 of a parent of no area.
+    const float least = std::numeric_limits<float>::denorm_min();
+    const Bounds sliver = box({0, 0, 0}, {1, least, 0});
+    const Bounds segment = box({0, 0, 0}, {1, 0, 0});
+    check_cost(sliver, sliver, 3, segment, 5, 0.125f + 3,
+               "the parent's area is the least float above 0, not none: the segment without area has a share of 0", true);
 }
 
 namespace {
@@ -126,6 +148,18 @@ GRADED_TEST("best_split: the cheapest plane between bins, by the SAH, with both 
         CHECK(lone.split == -1);
         CHECK(std::isinf(lone.cost));
     }
+}
+
+GRADED_TEST("best_split: the plane before the last bin holding objects, with two bins or with empty bins after it", "10.2", 2)
+{
+    // Two bins are the fewest with a plane between them: 3 in [0,1] (half area 3) against 5 in
+    // [1,2] (3), in a parent 2 x 1 x 1 (5): 0.125 + 9/5 + 15/5.
+    check_best_split(box({0, 0, 0}, {2, 1, 1}), {3, 5}, 0, 0.125f + 9.0f / 5 + 15.0f / 5,
+                     "two bins leave one plane, after bin 0, with objects on both sides");
+    // The same two bins and an empty third, in a parent 3 x 1 x 1 (7): the plane after bin 0 has
+    // bin 1 alone on its right, and the empty bin after it does not make that side empty.
+    check_best_split(box({0, 0, 0}, {3, 1, 1}), {3, 5, 0}, 0, 0.125f + 9.0f / 7 + 15.0f / 7,
+                     "the right side of the plane after bin 0 holds bin 1's 5 objects; only the plane after bin 1 has an empty side");
 }
 
 GRADED_TEST("make_leaf: at most leaf_size objects, at the depth limit, or when no split pays", "10.3", 4)

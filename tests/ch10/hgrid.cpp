@@ -120,6 +120,29 @@ GRADED_TEST("hgrid_closest: a hit in a child grid ends the walk; a walk over a p
     CHECK(!nan);
 }
 
+GRADED_TEST("hgrid_closest: a walk over a part the grid misses visits no cell and tests nothing, where one through it visits its cells", "10.5", 1)
+{
+    const HGrid h = two_levels({1}, {1});
+    // The same grid is walked, and visited, by a ray through it.
+    ObjectHit best;
+    reset_counters();
+    const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, objects(), best);
+    INFO("10.5: " << show(along_x) << ", through the root's box: got " << answer(found, best) << " after "
+         << counter(Counter::cells_visited) << " cells visited; expected object 1, its cell visited");
+    CHECK(found);
+    CHECK(counter(Counter::cells_visited) > 0);
+    ObjectHit none;
+    const Ray above{{-1, 5, 0.5f}, {1, 0, 0}};
+    reset_counters();
+    const bool miss = hgrid_closest(h, 0, above, {0.0f, infinity}, {0.0f, infinity}, objects(), none);
+    INFO("10.5: " << show(above) << ", passing above the root's box: got " << answer(miss, none) << " after "
+         << counter(Counter::cells_visited) << " cells visited and " << counter(Counter::intersection_tests)
+         << " tests; expected no hit, no cell visited and no test: a walk that misses the box has no cell to visit");
+    CHECK(!miss);
+    CHECK(counter(Counter::cells_visited) == 0);
+    CHECK(counter(Counter::intersection_tests) == 0);
+}
+
 GRADED_TEST("the hierarchy of grids answers every ray as brute force does, on the kit's scenes and generated ones",
             "10.5", 5)
 {

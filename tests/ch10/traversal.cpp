@@ -4,6 +4,7 @@
 #include "tests/ch10/closed_sphere.hpp"
 
 #include <filesystem>
+#include <limits>
 
 using namespace rt;
 using namespace rt::grader;
@@ -203,4 +204,48 @@ GRADED_TEST("bvh_query: a direction of 0 or -0 along the node's axis is not posi
         CHECK(tests == 2);
         CHECK(nodes == 3);
     }
+}
+
+GRADED_TEST("bvh_query: the any-hit query answers with the first object it hits, at once, though a nearer one follows in the leaf",
+            "10.4", 1)
+{
+    // One leaf holding both spheres, sphere 1 (x = 5) listed before sphere 0 (x = 1): along +x the
+    // first object tested is hit, and any-hit stops there; only a closest-hit query goes on to
+    // sphere 0.
+    Bvh b;
+    b.nodes = {{{0.5f, -0.5f, -0.5f}, 0, {5.5f, 0.5f, 0.5f}, 2, 0}};
+    b.object_index = {1, 0};
+    const Ray ray{{-3, 0, 0}, {1, 0, 0}};
+    ObjectHit hit;
+    reset_counters();
+    const bool any = bvh_query(b, ray, {0.0f, infinity}, two_objects(), true, hit);
+    const std::uint64_t tests = counter(Counter::intersection_tests);
+    INFO("10.4: any-hit, " << show(ray) << ", one leaf listing sphere 1 (x = 5) before sphere 0 (x = 1): got "
+         << answer(any, hit) << " after " << tests << " tests; expected sphere 1 after 1 test: the first object hit "
+         "ends an any-hit query at once, nearer or not");
+    CHECK(any);
+    CHECK(hit.object == 1);
+    CHECK(tests == 1);
+}
+
+GRADED_TEST("bvh_query: the least positive direction along the node's axis is positive, so the first child is searched first",
+            "10.4", 1)
+{
+    // The two leaves of two_leaves(), the root marked as split along y; the ray's y component the
+    // least float above 0 (1.4e-45): positive, so the first child (sphere 0, x = 1) comes first,
+    // is hit, and the second's box lies beyond it: 1 test.
+    Bvh b = two_leaves();
+    b.nodes[0].axis = 1;
+    const Ray ray{{-3, 0, 0}, {1, std::numeric_limits<float>::denorm_min(), 0}};
+    ObjectHit hit;
+    reset_counters();
+    const bool found = bvh_query(b, ray, {0.0f, infinity}, two_objects(), false, hit);
+    const std::uint64_t tests = counter(Counter::intersection_tests);
+    INFO("10.4: " << show(ray) << " (y component 1.4e-45, the least float above 0), the root split along y, its first "
+         "child holding sphere 0 (x = 1), its second sphere 1 (x = 5): got " << answer(found, hit) << " after " << tests
+         << " tests; expected sphere 0 after 1 test: any direction above 0 along the node's axis, however small, is "
+         "positive, so the first child goes first");
+    CHECK(found);
+    CHECK(hit.object == 0);
+    CHECK(tests == 1);
 }
