@@ -3,6 +3,7 @@
 #include "common/random.hpp"
 #include "tests/grader/graded.hpp"
 
+#include <cfenv>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -57,11 +58,19 @@ GRADED_TEST("an oblique ray hits where t = n.(b - u) / n.v says, and the point l
 
 GRADED_TEST("a ray parallel to the plane misses, and one tilted slightly toward it hits far away", "01.2", 2)
 {
-    {
-        const Ray parallel{{0, 1, 0}, {1, 0, 0}};
+    // A parallel ray is turned away before any division: n.(b - u) / 0 would raise the division-by-zero
+    // flag (or, for a ray in the plane, 0 / 0 the invalid flag) even when the range then rejects the
+    // infinity or NaN it gives.
+    for (const Ray& parallel : {Ray{{0, 1, 0}, {1, 0, 0}}, Ray{{0, 0, 0}, {1, 0, 0}}}) {
+        std::feclearexcept(FE_ALL_EXCEPT);
         const std::optional<float> none = hit_plane(parallel, floor_plane, Interval{});
-        INFO(describe(parallel, floor_plane, Interval{}) << ": got t = " << show(none) << ", expected no hit");
+        const bool divided_by_zero = std::fetestexcept(FE_DIVBYZERO), invalid = std::fetestexcept(FE_INVALID);
+        INFO(describe(parallel, floor_plane, Interval{}) << ": got t = " << show(none) << ", expected no hit"
+             << (divided_by_zero ? "; it divided by n.v = 0 (a division by zero) instead of testing n.v = 0 first" : "")
+             << (invalid ? "; it computed 0 / 0 (an invalid operation) instead of testing n.v = 0 first" : ""));
         CHECK_FALSE(none);
+        CHECK_FALSE(divided_by_zero);
+        CHECK_FALSE(invalid);
     }
 
     const Ray tilted{{0, 1, 0}, glm::normalize(vec3(1, -1e-3f, 0))};
@@ -116,6 +125,20 @@ STABILITY_TEST("grazing rays give a finite t or no hit, never a NaN or an infini
         INFO(describe(far, floor_plane, Interval{}) << ": got t = " << show(t_far) << ", expected about 1e30");
         REQUIRE(t_far);
         CHECK(rt::grader::rel_error(*t_far, 1e30) <= 1e-6);
+    }
+
+    {
+        // The smallest grazing slope of all: n.v is the smallest subnormal, 1.4e-45, and so is
+        // n.(b - u), from an eye that far above the floor (the normal facing down): t = 1. It is not
+        // parallel (n.v is not 0), and a test against anything but 0 misses it.
+        const float tiny = std::numeric_limits<float>::denorm_min();
+        const Ray lowest{{0, tiny, 0}, {1, -tiny, 0}};
+        const Plane facing_down{floor_plane.b, {0, -1, 0}};
+        const std::optional<float> t_one = hit_plane(lowest, facing_down, Interval{});
+        INFO(describe(lowest, facing_down, Interval{}) << " (n.v and n.(b - u) both the smallest subnormal, "
+             << tiny << "): got t = " << show(t_one) << ", expected t = 1");
+        REQUIRE(t_one);
+        CHECK(*t_one == 1.0f);
     }
 
     for (const Ray& ray : {Ray{{0, 1, 0}, {1, -1e-45f, 0}}, Ray{{0, 0, 0}, glm::normalize(vec3(1, -1, 0))},

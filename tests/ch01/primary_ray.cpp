@@ -98,3 +98,21 @@ STABILITY_TEST("a 1x1 image looks straight ahead, and a 4096x1 image fans out sy
     CHECK(std::abs(left.dir.x + right.dir.x) <= 1e-6f);
     CHECK(std::abs(left.dir.y - right.dir.y) <= 1e-6f);
 }
+
+GRADED_TEST("a window whose left and top edges are 0: x = -0.5 lands exactly on l and y = -0.5 exactly on t", "01.1", 2)
+{
+    // The window [l, r] x [b, t] = [0, 2] x [-2, 0], straight down -z: x = -0.5 is l + (r - l) x 0,
+    // which is 0 exactly, so the ray through the left edge has no sideways part at all; y = -0.5 is
+    // t, 0 exactly, so the ray through the top edge has no upward part. A pixel centre put at
+    // anything but x + 0.5 (even one float step past a half) leans the edge's ray off the window.
+    const Camera cam{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, 0.0f, 2.0f, -2.0f, 0.0f, 2, 2};
+    const Ray left = primary_ray(cam, -0.5f, 1.5f);   // the window's bottom-left corner (l, b)
+    const Ray top = primary_ray(cam, 1.5f, -0.5f);    // its top-right corner (r, t)
+    INFO("window [l, r] x [b, t] = [0, 2] x [-2, 0], 2x2 image, eye at the origin looking down -z: position (-0.5, 1.5) gave "
+         << show(left) << ", expected a direction along (0, -2, -1) with x exactly 0; position (1.5, -0.5) gave "
+         << show(top) << ", expected a direction along (2, 0, -1) with y exactly 0");
+    CHECK(left.dir.x == 0.0f);
+    CHECK(top.dir.y == 0.0f);
+    check_ray(left, cam.eye, {0.0f, -2.0f, -1.0f}, "window [0, 2] x [-2, 0], position (-0.5, 1.5)");
+    check_ray(top, cam.eye, {2.0f, 0.0f, -1.0f}, "window [0, 2] x [-2, 0], position (1.5, -0.5)");
+}

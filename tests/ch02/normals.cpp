@@ -52,3 +52,23 @@ GRADED_TEST("interpolated_normal: each corner's own normal at the corners, unit 
         CHECK(glm::length(n - c.expected) <= 1e-6f);
     }
 }
+
+GRADED_TEST("interpolated_normal: across a sharp fold (corner normals nearly opposite), the short weighted sum, made unit, is within 1e-5 of double", "02.6", 1)
+{
+    // Corners a and b have normals 179.9 degrees apart: halfway along edge a-b (beta = 0.5, gamma = 0)
+    // their weighted sum is 2e-4 long, so the weights must be exact there: alpha = 1 - beta - gamma
+    // is 0.5 with no rounding, and any error in it (a float step, 1.2e-7) lands on a vector 2000
+    // times shorter than the normals and turns the answer by about 1e-4.
+    const CornerNormals normals{vec3(1, 0, 0), glm::normalize(vec3(-1, 0x1p-11f, 0)), vec3(0, 0, 1)};
+    for (const auto& [beta, gamma] : {std::pair{0.5f, 0.0f}, std::pair{0.5f, 0x1p-20f}}) {
+        const TriangleHit<float> hit{1.0f, beta, gamma};
+        const vec3 got = interpolated_normal(normals, hit);
+        const double alpha = 1.0 - double(beta) - double(gamma);
+        const dvec3 sum = alpha * dvec3(normals.a) + double(beta) * dvec3(normals.b) + double(gamma) * dvec3(normals.c);
+        const dvec3 want = sum / glm::length(sum);
+        INFO("corner normals a = " << show(normals.a) << ", b = " << show(normals.b) << ", c = " << show(normals.c)
+             << ", beta = " << beta << ", gamma = " << gamma << ": got " << show(got) << ", expected (" << want.x << ", "
+             << want.y << ", " << want.z << ") from the weights 1 - beta - gamma, beta, gamma in double");
+        CHECK(glm::length(dvec3(got) - want) <= 1e-5);
+    }
+}

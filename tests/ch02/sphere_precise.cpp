@@ -85,3 +85,33 @@ STABILITY_TEST("hit_sphere_precise: directions a few float steps off unit length
         probes[k].ray.dir *= 1.0f + static_cast<float>(static_cast<int>(k % 9) - 4) * 0x1p-23f;
     check_case("a unit sphere 1e3 away, directions scaled by 1 + k 2^-23, k = -4..4", probes, {4.0 * 1e3 * u, 1e-5});
 }
+
+GRADED_TEST("hit_sphere_precise: a ray leaving from one float step inside the surface: t (about 1e-7) within 1e-6 of exact", "02.2", 2)
+{
+    // From one float step inside a sphere of radius 0.75, heading out (b = f.V between 0 and 1): the
+    // exit is a float step or so away. q = -b - sqrt(disc) adds two numbers of one sign and c/q
+    // gives the exit to double's precision; -b + sqrt(disc) subtracts two numbers within 1e-7 of
+    // each other and keeps only the last digits of sqrt(disc)'s rounding: 2% to 19% wrong here.
+    // The range starts at 0, for the exit is far nearer than the default range.min.
+    const float r = 0.75f;
+    const Sphere sphere{{0, 0, 0}, r};
+    const point3 origin{std::nextafter(r, 0.0f), 0, 0};
+    for (const vec3 dir : {vec3(0.6f, 0.8f, 0.0f), vec3(0.8f, 0.6f, 0.0f), vec3(0.28f, 0.96f, 0.0f)})
+        spheres::check_against_exact(precise, Ray{origin, dir}, sphere, Interval{0.0f, infinity});
+}
+
+GRADED_TEST("hit_sphere_precise: with a range reaching behind the eye, the nearer root is the smaller t (e - d)", "02.2", 1)
+{
+    // 3 beyond a unit sphere's centre, heading away from it: the roots are t = -4 and t = -2, both
+    // inside (-10, 10). The nearer root, as the slide's e - d, is -4; the farther one, -2, only when
+    // -4 is outside the range. With b >= 0, c/q is the larger root and q the smaller.
+    const Sphere sphere{{0, 0, 0}, 1.0f};
+    const Ray ray{{0, 0, 3}, {0, 0, 1}};
+    for (const auto& [range, expected] : {std::pair{Interval{-10.0f, 10.0f}, -4.0f}, std::pair{Interval{-3.0f, 10.0f}, -2.0f}}) {
+        const std::optional<float> t = precise(ray, sphere, range);
+        INFO(spheres::query(ray, sphere, range) << ": got " << show(t) << ", expected t = " << expected
+             << " (the roots are -4 and -2; the smaller one inside the range comes first)");
+        REQUIRE(t);
+        CHECK(*t == expected);
+    }
+}

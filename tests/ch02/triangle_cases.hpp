@@ -122,6 +122,26 @@ inline void parallel(TriangleTestFn test)
     }
 }
 
+// The right triangle (0, 0, 0), (1, 0, 0), (0, 1, 0) seen straight down and straight up through
+// (x, y), inside it and at each edge's midpoint: every quantity a test divides by (n.v, the
+// determinant, U + V + W) is exactly 1 or -1 here, an edge's product difference is exactly 0, and
+// t = 1, beta = x and gamma = y come out exact.
+inline void axis_aligned(TriangleTestFn test)
+{
+    const Triangle tri{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (const auto& [x, y] : {std::pair{0.25f, 0.25f}, std::pair{0.5f, 0.5f}, std::pair{0.0f, 0.5f}, std::pair{0.5f, 0.0f}})
+        for (const float down : {1.0f, -1.0f}) {
+            const Ray ray{{x, y, down}, {0, 0, -down}};
+            const std::optional<TriangleHit<float>> hit = test(ray, tri, Interval{});
+            INFO(query(ray, tri, Interval{}) << ": got " << show(hit) << ", expected t = 1, beta = " << x << ", gamma = " << y
+                 << (x == 0 || y == 0 || x + y == 1 ? " (the point is on an edge: edges are inside)" : ""));
+            REQUIRE(hit);
+            CHECK(hit->t == 1.0f);
+            CHECK(hit->beta == x);
+            CHECK(hit->gamma == y);
+        }
+}
+
 inline void range_respected(TriangleTestFn test)
 {
     const Triangle tri{{-1, -1, -5}, {1, -1, -5}, {0, 1, -5}};  // straight ahead along -z at t = 5
@@ -374,6 +394,11 @@ inline void keeps_double_precision(std::optional<TriangleHit<double>> (*test)(co
                 number, 2)                                                                                             \
     {                                                                                                                  \
         rt::grader::triangles::parallel(&function<float>);                                                            \
+    }                                                                                                                  \
+    GRADED_TEST(#function ": the unit right triangle in z = 0 seen straight down and up, inside and at each edge: t = 1 and exact barycentrics", \
+                number, 1)                                                                                             \
+    {                                                                                                                  \
+        rt::grader::triangles::axis_aligned(&function<float>);                                                        \
     }                                                                                                                  \
     GRADED_TEST(#function ": only hits inside the range count, never one behind the origin", number, 2)               \
     {                                                                                                                  \
