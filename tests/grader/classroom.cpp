@@ -14,28 +14,7 @@ namespace {
 
 std::string chapter_of(const CaseResult& r) { return r.number.substr(0, 2); }
 
-
-std::string json_string(const std::string& s)
-{
-    std::ostringstream out;
-    out << '"';
-    for (const unsigned char c : s) {
-        switch (c) {
-        case '"': out << "\\\""; break;
-        case '\\': out << "\\\\"; break;
-        case '\n': out << "\\n"; break;
-        case '\t': out << "\\t"; break;
-        case '\r': out << "\\r"; break;
-        default:
-            if (c < 0x20)
-                out << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
-            else
-                out << c;
-        }
-    }
-    out << '"';
-    return out.str();
-}
+std::string json_string(const std::string& s) { return '"' + escape_json(s) + '"'; }
 
 // A case that could not run to a verdict is an error to Classroom (a chapter that did not compile
 // or has no file, a crash, a stop), a failed check a failure.

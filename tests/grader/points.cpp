@@ -40,6 +40,13 @@ std::string unescape_line(const std::string& s)
     return out;
 }
 
+
+// The results file's words for CaseStatus, in its order.
+constexpr const char* status_words[] = {"passed", "failed", "crashed", "stopped", "stub",
+                                        "waits_for_stub", "untouched", "does_not_compile", "no_file"};
+
+}  // namespace
+
 std::string escape_json(const std::string& s)
 {
     std::ostringstream out;
@@ -59,12 +66,6 @@ std::string escape_json(const std::string& s)
     }
     return out.str();
 }
-
-// The results file's words for CaseStatus, in its order.
-constexpr const char* status_words[] = {"passed", "failed", "crashed", "stopped", "stub",
-                                        "waits_for_stub", "untouched", "does_not_compile", "no_file"};
-
-}  // namespace
 
 const char* status_word(CaseStatus status) { return status_words[static_cast<int>(status)]; }
 

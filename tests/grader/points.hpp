@@ -58,6 +58,9 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
 // Text safe inside XML or HTML: & < > " escaped.
 std::string escape_xml(const std::string& s);
 
+// Text safe inside a JSON string (without the quotes): " \ and control characters escaped.
+std::string escape_json(const std::string& s);
+
 // A case's output as a student reads it: paths relative to the kit, and no more than the first
 // case_output_lines lines (or 4000 characters), then how many more there were.
 std::string tidy_output(std::string output);
