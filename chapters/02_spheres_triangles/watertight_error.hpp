@@ -104,19 +104,20 @@ T watertight_t_error(const BasicRay<T>& ray, const BasicTriangle<T>& tri)
 // taken again in double, whose rounding is 2^29 times finer. Its hit is certainly in front of the
 // ray when it lies beyond both its own bound and the slab the origin's float rounding leaves across
 // the plane (a few ulps of its largest coordinate); nearer, it is the surface the ray leaves, or
-// nothing that can be told from it. The hit goes to `out` as float, as the float test gives it. Rare,
-// so kept out of the callers' loops, and answered through a reference: returned as an optional, it
-// made GCC 12 build every test's result in memory (shape_tests.hpp), 22% more instructions in
-// chapter 04's render loop.
+// nothing that can be told from it. The hit goes to `out` as float, as the float test gives it. No
+// range is asked: the caller applies its range to this answer (bounded_answer). Rare, so kept out
+// of the callers' loops, and answered through a reference: returned as an optional, it made GCC 12
+// build every test's result in memory (shape_tests.hpp), 22% more instructions in chapter 04's
+// render loop.
 #if defined(__GNUC__)
 [[gnu::cold, gnu::noinline]]
 #endif
-inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, Interval range, TriangleHit<float>& out)
+inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, TriangleHit<float>& out)
 {
     const BasicRay<double> r{glm::dvec3(ray.origin), glm::dvec3(ray.dir)};
     const BasicTriangle<double> t{glm::dvec3(tri.a), glm::dvec3(tri.b), glm::dvec3(tri.c)};
     const std::optional<TriangleHit<double>> hit =
-        hit_triangle_watertight(r, t, BasicInterval<double>{double(range.min), double(range.max)});
+        hit_triangle_watertight(r, t, BasicInterval<double>{0.0, std::numeric_limits<double>::infinity()});
     if (!hit)
         return false;
     // The origin's own rounding: origin_ulps float steps of its largest coordinate, crossed at the
@@ -129,7 +130,21 @@ inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, 
     if (!(hit->t > watertight_t_error(r, t)) || !(hit->t * approach > slab))
         return false;
     out = {static_cast<float>(hit->t), static_cast<float>(hit->beta), static_cast<float>(hit->gamma)};
-    return range.surrounds(out.t);
+    return true;
+}
+
+// The bounded test's answer for a hit the float test found: its own t where that lies beyond the
+// bound, else double's decision. The answer depends on the ray and the triangle alone, never on a
+// range: a query applies its range to the answer, not to the float t, or two copies of one triangle
+// asked in two ranges (the tie rule, closer_than) could answer differently, the float t outside the
+// nearer range and double's t inside it.
+inline bool bounded_answer(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, TriangleHit<float>& out)
+{
+    if (hit.t > watertight_t_error(ray, tri)) {
+        out = hit;
+        return true;
+    }
+    return hit_triangle_decided_in_double(ray, tri, out);
 }
 
 }  // namespace rt

@@ -291,31 +291,29 @@ private:
                     return true;
             return false;
         };
-        // What the one-by-one loop asks an object, for a lane the block's test hit: the tie rule, the
-        // bound on t, its front; true when the hit is kept.
+        // What the one-by-one loop asks an object, for a lane the block's test hit: the bound on t
+        // (bounded_answer, before the range, as hit_triangle_bounded applies it), the tie rule, its
+        // front; true when the hit is kept.
         const auto lane_kept = [&](const FourTriangles& g, const FourHits& h, int i) {
             const int k = g.object[i];
-            if (!closer_than(range, best, k).surrounds(h.t[i]))
-                return false;
             const Triangle tri = g.triangle(i);
-            ObjectHit hit{h.t[i], k, h.V[i] / h.det[i], h.W[i] / h.det[i]};
-            if (bounded && !(h.t[i] > watertight_t_error(ray, tri))) {
-                // As hit_triangle_bounded: double decides where the bound cannot.
-                TriangleHit<float> near;
-                if (!hit_triangle_decided_in_double(ray, tri, closer_than(range, best, k), near))
-                    return false;
-                hit = {near.t, k, near.beta, near.gamma};
-            }
+            TriangleHit<float> answer{h.t[i], h.V[i] / h.det[i], h.W[i] / h.det[i]};
+            if (bounded && !bounded_answer(ray, tri, answer, answer))
+                return false;
+            if (!closer_than(range, best, k).surrounds(answer.t))
+                return false;
             if (objects.one_sided && (*objects.one_sided)[objects.ref(k).index] && glm::dot(face_normal(tri), ray.dir) > 0.0f)
                 return false;  // its back
-            keep(hit);
+            keep(ObjectHit{answer.t, k, answer.beta, answer.gamma});
             return true;
         };
         // A block of a leaf of triangles: four at a time (10.6) where the query asks for the
         // watertight test, else (or with 10.6's stub) one by one; true when a hit answers an any-hit
         // query.
         const auto block = [&](const FourTriangles& g, std::uint32_t n) {
-            const FourHits h = four_wide ? hit_four_triangles(g, frame, Interval{range.min, reach.max}) : FourHits::not_tested();
+            // Bounded, every lane hit beyond range.min: a lane's answer may come nearer than its float t.
+            const FourHits h = four_wide ? hit_four_triangles(g, frame, Interval{range.min, bounded ? infinity : reach.max})
+                                         : FourHits::not_tested();
             if (!h.tested) {
                 for (std::uint32_t i = 0; i < n; ++i)
                     if (ask(g.object[i]))
@@ -332,14 +330,24 @@ private:
                 count(Counter::intersection_tests, n);
                 return false;
             }
-            // Nearest first, by t and then object number (closer_than's order): the first lane kept
-            // is the block's answer (every lane after it would fail closer_than), and the bound on t
-            // is worked out about once a block, not for every lane hit that beats the best so far.
-            // Only the block's n lanes, and a lane that fails is passed over, not taken to end the
-            // block: a 10.6 that breaks its contract (a hit in an empty lane, a NaN t, t at the
-            // range's start) costs its own lanes, not the others'.
             count(Counter::intersection_tests, n);
-            for (unsigned left = h.hit & ((1u << n) - 1u); left != 0;) {
+            unsigned left = h.hit & ((1u << n) - 1u);
+            if (bounded) {
+                // Every lane asked, as the one-by-one loop asks them (closer_than keeps the nearest
+                // whatever the order): a lane whose float t is within the bound is answered by
+                // double, nearer or farther than the float t says, so no float order can end the
+                // block early.
+                for (int i = 0; left != 0; ++i, left >>= 1)
+                    if (left & 1u)
+                        lane_kept(g, h, i);
+                return false;
+            }
+            // Nearest first, by t and then object number (closer_than's order): the first lane kept
+            // is the block's answer (every lane after it would fail closer_than). Only the block's n
+            // lanes, and a lane that fails is passed over, not taken to end the block: a 10.6 that
+            // breaks its contract (a hit in an empty lane, a NaN t, t at the range's start) costs its
+            // own lanes, not the others'.
+            while (left != 0) {
                 int i = -1;
                 for (int l = 0; l < 4; ++l)
                     if (left >> l & 1u && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
