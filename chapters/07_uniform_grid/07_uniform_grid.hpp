@@ -71,7 +71,6 @@ inline GridShape grid_shape(const Bounds& box, const cell3& n)
 //    a box of no extent at all, or no axis cut (lambda N of at most one cell; an infinite extent,
 //    whose side is infinite, even beside a flat axis). One object is a count like any other: its
 //    lambda cells.
-// Precision: exact counts; float arithmetic (the box's own) is enough.
 // Example: a floor 4 x 0.01 x 4 with 64 objects at lambda 1 gives 8 x 1 x 8: x and z are cut into
 // cells of side 0.5 (their area, 16, holds 64 of them, and both are wider than 0.5); y's 0.01 is no
 // wider than 0.5.
