@@ -116,11 +116,11 @@ CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
 GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
 {
     // EXERCISE 07.4: the walk's setup.
-    // Return the walk of `ray` through `grid` over `range`, in the cell where it enters the box (a
-    // missed walk when it never meets the box within the range), every GridWalk field set as the
-    // header says: per moving axis the step, t_delta, t_first (in double) and t_max; t_enter; t_end,
-    // the nearer of the range's end and the box's face as the walk's own boundaries place it;
-    // t_range. A 0 or -0 component never steps.
+    // Return the walk of `ray` through `grid` over `range`, in the first cell it visits (where it
+    // enters the box, or where the range starts inside it; a missed walk when it never meets the
+    // box within the range), every GridWalk field set as the header says: per moving axis the step,
+    // t_delta, t_first (in double) and t_max; t_enter; t_end, the nearer of the range's end and the
+    // box's face as the walk's own boundaries place it; t_range. A 0 or -0 component never steps.
     // Lesson: "The walk (EXERCISES 07.4 and 07.5)" (its paragraphs The setup and Termination).
     // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
     // Going down an axis, the first boundary ahead is the cell's lower face.
