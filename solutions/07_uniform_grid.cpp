@@ -30,10 +30,14 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_
     // EXERCISE 07.1: the cube-root rule.
     // Return the number of cells along each axis: cubic cells, about lambda of them per object,
     // spread over the axes the scene has room along; each count rounded to the nearest and kept
-    // within 1 .. max_per_axis. An axis no wider than a cell gets one cell, and the side is chosen
-    // again over the others. A count of 0 or less, an empty box, or a box of no extent: 1 x 1 x 1.
+    // within 1 .. max_per_axis. An axis no wider than the final side gets one cell and takes no
+    // part in choosing it. A count of 0 or less, an empty box, or a box of no extent: 1 x 1 x 1.
     // A floor spreads its cells over an area, a line over a length: the root must follow.
-    // Lesson: "The grid's resolution".
+    // Lesson: "The grid's resolution (EXERCISE 07.1)".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // An axis no wider than a cell gets one cell, and the side is chosen again over the others,
+    // until none is.
+    // DETAIL END
     // Stuck? hint 07.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     if (objects <= 0 || box.empty())
@@ -75,8 +79,10 @@ cell3 cell_of(const GridShape& grid, const point3& p)
     // Return the cell of `grid` that holds p: on each axis, how many whole cells p lies past the box's
     // min side. A point exactly on a boundary belongs to the cell above it; a point on the far face,
     // or outside the grid however far (even infinitely), to the nearest cell inside.
+    // Lesson: "A point's cell, and an object's cells (EXERCISES 07.2 and 07.3)".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
     // Clamp while the value is still a float: a point 1e30 away is no int.
-    // Lesson: "A point's cell, and an object's cells".
+    // DETAIL END
     // Stuck? hint 07.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     cell3 c;
@@ -92,10 +98,14 @@ cell3 cell_of(const GridShape& grid, const point3& p)
 CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
 {
     // EXERCISE 07.3: the cells a box overlaps.
-    // Return the block of cells `bounds` touches, first and last on each axis both included, clamped
-    // into the grid: a box larger than the grid gets every cell. A box that ends exactly on a cell
-    // boundary is listed on both sides of it. Your 07.2 already does the hard part.
-    // Lesson: "A point's cell, and an object's cells".
+    // Return the block of cells that hold some point of `bounds` as 07.2 places points, first and
+    // last on each axis both included, clamped into the grid: a box larger than the grid gets every
+    // cell. A box that ends exactly on a cell boundary is listed on both sides of it; one that
+    // starts exactly on a boundary, in the cell above it only.
+    // Lesson: "A point's cell, and an object's cells (EXERCISES 07.2 and 07.3)".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // Your 07.2 already does the hard part.
+    // DETAIL END
     // Stuck? hint 07.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     return {cell_of(grid, bounds.min), cell_of(grid, bounds.max)};
@@ -106,13 +116,15 @@ CellRange cells_overlapping(const GridShape& grid, const Bounds& bounds)
 GridWalk start_walk(const GridShape& grid, const Ray& ray, Interval range)
 {
     // EXERCISE 07.4: the walk's setup.
-    // Return the walk of `ray` through `grid` over `range`, in the cell where it enters the box (a
-    // missed walk when it never meets the box within the range), every GridWalk field set as the
-    // header says: per moving axis the step, t_delta, t_first (in double) and t_max; t_enter; t_end,
-    // the nearer of the range's end and the box's face as the walk's own boundaries place it;
-    // t_range. A 0 or -0 component never steps. Going down an axis, the first boundary ahead is the
-    // cell's lower face.
-    // Lesson: "The walk" (its paragraphs The setup and Termination).
+    // Return the walk of `ray` through `grid` over `range`, in the first cell it visits (where it
+    // enters the box, or where the range starts inside it; a missed walk when it never meets the
+    // box within the range), every GridWalk field set as the header says: per moving axis the step,
+    // t_delta, t_first (in double) and t_max; t_enter; t_end, the nearer of the range's end and the
+    // box's face as the walk's own boundaries place it; t_range. A 0 or -0 component never steps.
+    // Lesson: "The walk (EXERCISES 07.4 and 07.5)" (its paragraphs The setup and Termination).
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // Going down an axis, the first boundary ahead is the cell's lower face.
+    // DETAIL END
     // Stuck? hint 07.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     GridWalk walk;
@@ -152,7 +164,7 @@ bool next_cell(GridWalk& walk)
     // return true; return false, the walk unchanged, when that boundary is at or beyond t_end. Every
     // field the step touches must stay consistent, and the next boundary's t comes from boundary_t,
     // never from a running sum. A walk whose t is NaN must stop too.
-    // Lesson: "The walk" (the 3D DDA, Termination and Drift).
+    // Lesson: "The walk (EXERCISES 07.4 and 07.5)" (the 3D DDA, Termination and Drift).
     // Stuck? hint 07.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     int a = walk.t_max[0] < walk.t_max[1] ? 0 : 1;
@@ -173,11 +185,15 @@ bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Int
                      ObjectHit& best)
 {
     // EXERCISE 07.6: the cell query.
-    // Test each object listed in the walk's current cell against `ray`, each in the range that beats
-    // `best` (closer_than), and keep in `best` the nearest hit that lies within the cell, no farther
-    // than walk.cell_exit(). Return whether `best` changed; an empty cell changes nothing.
+    // Keep in `best` the nearest hit of `ray`, among the objects listed in the walk's current cell,
+    // that lies within the cell (no farther than walk.cell_exit()) and beats `best` (closer_than's
+    // range). Return whether `best` changed; an empty cell changes nothing.
     // A hit beyond the cell is not wrong, only early: leave it, a later cell that lists it finds it.
-    // Lesson: "The cell query".
+    // Lesson: "The cell query (EXERCISE 07.6): a hit beyond the cell must not end the walk".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // Test each object listed in the walk's current cell against `ray`, each in the range that
+    // beats `best` (closer_than), and keep a hit only when its t is no farther than the cell's exit.
+    // DETAIL END
     // Stuck? hint 07.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     bool found = false;

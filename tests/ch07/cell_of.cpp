@@ -60,8 +60,10 @@ GRADED_TEST("cells_overlapping: a box spans the cells from its min corner's to i
 GRADED_TEST("cells_overlapping: a box that ends exactly on a boundary is listed on both sides of it", "07.3", 3)
 {
     check_range({{-0.9f, 0.2f, 2.2f}, {-0.5f, 1.0f, 2.4f}}, {0, 0, 1}, {1, 1, 2},
-                "it ends on x = -0.5, y = 1 and z = 2.4: the cells beyond those boundaries too");
-    check_range({{0.0f, 0.5f, 2.5f}, {0.0f, 0.5f, 2.5f}}, {2, 0, 2}, {2, 0, 2}, "a point box in one cell");
+                "it ends on x = -0.5, y = 1 and z = 2.4: the cells beyond those boundaries too; it starts on "
+                "z = 2.2: from the cell above it only (z's cell 1), the cell below holds none of its points");
+    check_range({{0.0f, 0.5f, 2.5f}, {0.0f, 0.5f, 2.5f}}, {2, 0, 2}, {2, 0, 2},
+                "a point box on the boundary x = 0: the cell above it alone");
 }
 
 GRADED_TEST("cell_of: one ulp below a boundary is the cell below it, one ulp above the cell above; one ulp either side of the far face, the last cell", "07.2", 3)
