@@ -32,7 +32,7 @@ std::uint32_t next_signature(Mailboxes& m)
     // Return the next ray's signature, one more than the last one handed out, and remember it in m.
     // 0 means "no ray" and is never handed out: when the 32-bit counter wraps, every mailbox of m
     // must first forget its ray, and the count starts again at 1. Until then leave the mailboxes alone.
-    // Lesson: "Signatures".
+    // Lesson: "Signatures (EXERCISE 08.1)".
     // Stuck? hint 08.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     std::uint32_t s = m.last_signature + 1u;
@@ -52,12 +52,12 @@ bool mailboxed_intersect(Mailboxes& m, std::uint32_t signature, const Objects& o
                          Interval range, ObjectHit& hit)
 {
     // EXERCISE 08.2: one object through its mailbox.
-    // Return whether `ray` hits object k inside `range`, with `hit` filled in. When k's mailbox holds
-    // `signature`, this ray has tested k before: answer from the mailbox with no test, counted in
-    // Counter::mailbox_hits. Otherwise make the one counted test and store its answer, hit or miss,
-    // with the signature. A stored hit is a hit only strictly inside the range asked now.
-    // Store what the test found, whether or not the caller will keep it.
-    // Lesson: "Through the mailbox".
+    // Return whether `ray` hits object k strictly inside `range`, with `hit` filled in, testing k at
+    // most once per signature: the first call for a signature makes the one counted test and leaves
+    // what it found (hit or miss, kept by the caller or not) in k's mailbox; later calls are answered
+    // from the mailbox, untested, each counted in Counter::mailbox_hits, a stored hit counting only
+    // strictly inside the range asked now.
+    // Lesson: "Through the mailbox (EXERCISE 08.2)".
     // Stuck? hint 08.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     Mailbox& b = m.box[k];
@@ -86,7 +86,7 @@ bool closest_in_cell_mailboxed(const Grid& grid, const GridWalk& walk, Mailboxes
     // beats `best`; return whether `best` changed), with each object asked through 08.2 for this
     // ray's `signature` in the mailboxes m. A hit beyond the cell is left, not marked done: the
     // cell that holds it will ask again and get its answer from the mailbox.
-    // Lesson: "The cell query through the mailboxes".
+    // Lesson: "The cell query through the mailboxes (EXERCISE 08.3)".
     // Stuck? hint 08.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     bool found = false;

@@ -29,7 +29,8 @@ std::int32_t residue_step(std::int32_t step_p, std::uint32_t M)
     // Return step_p mod M as a number with step_p's own sign, strictly between -M and M: what one
     // step along an axis adds to the walk's residue r. Negative steps, steps larger than M,
     // multiples of M and M = 1 all occur; M is any 32-bit unsigned size. Nudge: step_p is signed
-    // and M is not; mind what C++ does when the two meet. Lesson: "The residue without division".
+    // and M is not; mind what C++ does when the two meet.
+    // Lesson: "The residue without division (EXERCISES 09.1 and 09.2)".
     // Stuck? hint 09.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     return static_cast<std::int32_t>(static_cast<std::int64_t>(step_p) % static_cast<std::int64_t>(M));
@@ -41,8 +42,11 @@ std::uint32_t advance_residue(std::uint32_t r, std::int32_t step, std::uint32_t 
 {
     // EXERCISE 09.2: the residue after a step
     // Return r + step brought back into [0, M), for r in [0, M) and step in (-M, M), with no
-    // division or remainder: one comparison and at most one correction by M. The sum can be
-    // negative, can land exactly on M, and can be larger than any 32-bit signed number.
+    // division or remainder. The sum can be negative, can land exactly on M, and can be larger
+    // than any 32-bit signed number.
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // One comparison and at most one correction by M.
+    // DETAIL END
     // Lesson: "The residue without division (EXERCISES 09.1 and 09.2)".
     // Stuck? hint 09.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
@@ -61,7 +65,8 @@ bool occupied(const OccupancyBits& bits, std::int32_t p)
     // EXERCISE 09.3: the occupancy bit
     // Return whether cell p's bit is set in the array (OccupancyBits in the header: 64 bits to a
     // word, counted from word 0's least significant bit). p is a cell address, 0 or more.
-    // Nudge: whatever you shift must be 64 bits wide. Lesson: "The occupancy bits".
+    // Nudge: whatever you shift must be 64 bits wide.
+    // Lesson: "The occupancy bits (EXERCISES 09.3 and 09.5)".
     // Stuck? hint 09.3 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     const auto u = static_cast<std::uint32_t>(p);
@@ -95,7 +100,8 @@ bool closest_in_hashed_cell(const HashTable& table, const OccupancyBits& bits, c
     // read only when the cell's occupancy bit is on. Each call counts once: a skipped lookup
     // (Counter::table_lookups_skipped) when the bit is off, else a lookup (Counter::table_lookups),
     // even when the table then holds no such cell. Returns whether best changed.
-    // Lesson: "The occupancy bits", and chapter 07's "The cell query".
+    // Lesson: "The occupancy bits (EXERCISES 09.3 and 09.5)", and chapter 07's "The cell query
+    // (EXERCISE 07.6): a hit beyond the cell must not end the walk".
     // Stuck? hint 09.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
     if (!occupied(bits, walk.p)) {
