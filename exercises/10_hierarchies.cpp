@@ -25,7 +25,8 @@ float sah_cost(const Bounds& parent, const Bounds& left, int n_left, const Bound
     // Return the surface area heuristic's expected cost of splitting a node of box `parent` into the
     // two children given (each a box and an object count), with the header's two cost constants.
     // An empty child (no objects, an empty box) adds nothing; a parent of no area (every object at
-    // one point) gives each child a share of 1. Lesson: "The surface area heuristic".
+    // one point) gives each child a share of 1. Lesson: "The surface area heuristic (EXERCISES 10.1
+    // and 10.2)".
     // Stuck? hint 10.1 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("10.1", infinity);
 }
@@ -36,7 +37,10 @@ SahSplit best_split(const Bounds& parent, const std::vector<SahBin>& bins)
     // Return the cheapest plane k between neighbouring bins (bins 0..k left, the rest right) with
     // its cost by 10.1, or the default SahSplit (no split) when no plane has objects on both
     // sides, as with fewer than two bins. On equal costs the first plane wins; the last plane
-    // counts. One pass each way over the bins, not one per plane. Lesson: "The surface area heuristic".
+    // counts. Lesson: "The surface area heuristic (EXERCISES 10.1 and 10.2)".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // One pass each way over the bins, not one per plane.
+    // DETAIL END
     // Stuck? hint 10.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("10.2", SahSplit{});
 }
@@ -56,10 +60,14 @@ bool bvh_query(const Bvh& bvh, const Ray& ray, Interval range, const Objects& ob
 {
     // EXERCISE 10.4: the traversal loop
     // Return whether the ray hits an object of the tree within range, the nearest in `hit` (on a tie
-    // the lower object number; with any_hit, the first found, at once). A loop over a small stack of
-    // node numbers (bvh_stack_size), no recursion; the near child first; no node entered that lies
-    // beyond the best hit so far; each node taken from the stack counted (Counter::nodes_visited).
-    // A tree of no nodes, or a ray that is not valid_ray: no hit. Lesson: "The traversal".
+    // the lower object number; with any_hit, the first found, at once). The near child first; no box
+    // searched that the ray meets only beyond the best hit so far; each node whose box is tested
+    // counted (Counter::nodes_visited). A tree of no nodes, or a ray that is not valid_ray: no hit.
+    // Lesson: "The traversal (EXERCISE 10.4)".
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // A loop over a small stack of node numbers (bvh_stack_size), no recursion; each node taken
+    // from the stack counted.
+    // DETAIL END
     // Stuck? hint 10.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("10.4", false);
 }
@@ -72,7 +80,8 @@ bool hgrid_closest(const HGrid& h, int g, const Ray& ray, Interval part, Interva
     // (Counter::cells_visited), and ask each cell in turn: one without a grid of its own as 07.6
     // does, in the query's `range`; one with a grid by this same function, over only the part of the
     // ray inside that cell. The first cell that keeps a hit ends the walk, at every level; a walk
-    // that misses keeps nothing. Returns whether best changed. Lesson: "The hierarchy of grids".
+    // that misses keeps nothing. Returns whether best changed. Lesson: "The hierarchy of grids
+    // (EXERCISE 10.5)".
     // Stuck? hint 10.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     return stub("10.5", false);
 }
@@ -82,8 +91,9 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
     // EXERCISE 10.6 (advanced): four triangles at once
     // Return the lanes of block g that the ray of frame f hits with t strictly inside range, each with
     // its t, V, W and det exactly as the watertight test (02.5) computes them for that lane's
-    // triangle: 02.5's formulas with Float4 in place of float, in the same order (the contract writes
-    // them out); triangles without area and empty lanes never hit. The stub's FourHits::not_tested()
+    // triangle: 02.5's float operations with Float4 in place of float, in the same order (where an
+    // edge function is 0 in float, that lane's three again in double, each rounded back to float);
+    // triangles without area and empty lanes never hit. The stub's FourHits::not_tested()
     // has the wide tree ask the block one triangle at a time. Lesson: "Four triangles at once
     // (EXERCISE 10.6, advanced)".
     // Stuck? hint 10.6 (tier 1: the idea; 2: the trap; 3: the walk-through)
