@@ -59,10 +59,13 @@ std::optional<T> hit_sphere_precise(const BasicRay<T>& ray, const BasicSphere<T>
 {
     // EXERCISE 02.2: the same sphere, without the cancellation (Ray Tracing Gems ch. 7).
     // The same answers as 02.1 (the nearest t strictly inside `range`, a tangent ray misses, a ray from
-    // inside hits the far side), but with no subtraction whose rounding float cannot afford: the
-    // discriminant from a vector, not from the slide's difference of two squares, the two roots
-    // each by a stable form, and every step in double whatever T is: from 1 above a sphere of
-    // radius 1e4, t stays within 1e-6.
+    // inside hits the far side), keeping their precision for distant, tiny and huge spheres: from 1
+    // above a sphere of radius 1e4, t stays within 1e-6, which float arithmetic cannot reach.
+    // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
+    // No subtraction whose rounding float cannot afford: the discriminant from a vector, not from
+    // the slide's difference of two squares, the two roots each by a stable form, and every step in
+    // double whatever T is.
+    // DETAIL END
     // Lesson: "Why the slide's sphere fails far away, and the fix (EXERCISE 02.2)".
     // Stuck? hint 02.2 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
@@ -165,7 +168,8 @@ std::optional<TriangleHit<T>> hit_triangle_watertight(const BasicRay<T>& ray, co
     // The same answers as 02.3 (t strictly inside `range`, beta and gamma, edges inside, both faces, any
     // non-zero ray.dir), decided where the ray runs from the origin along +z, by three 2D edge functions
     // (the given cross_2d) that triangles sharing an edge compute from the same numbers, so that no ray
-    // slips through a mesh. A triangle without area is never hit.
+    // slips through a mesh. A triangle without area is never hit. An edge function that float rounds
+    // to 0 is decided in double, and the grader checks t, beta and gamma to the bit (the contract).
     // Lesson: "Watertight (EXERCISE 02.5, advanced)".
     // Stuck? hint 02.5 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
