@@ -188,7 +188,7 @@ bool write_class_page(const std::string& path, const std::string& student_rows, 
 <html lang="en"><head><meta charset="utf-8"><title>The class</title>
 <style>body{font-family:sans-serif;margin:2em;color:#222}td,th{border:1px solid #ccc;padding:0.3em 0.6em;vertical-align:top;text-align:left}
 table{border-collapse:collapse;margin:0.5em 0 1.5em}td.ok{background:#dfd}td.part{background:#ffd}td.flag{background:#fdd}small{color:#733}
-table.exercises ol{margin:0;padding-left:1.4em}table.exercises code{font-size:85%;color:#555}</style>
+table.exercises td:nth-child(-n+4){white-space:nowrap}table.exercises ol{margin:0;padding-left:1.4em}table.exercises code{font-size:85%;color:#555}</style>
 </head><body><h1>The class</h1>
 <p>Gradebook: )"
         << link(gradebook, path) << R"(. A chapter's cell is flagged with what an instructor
