@@ -4,13 +4,16 @@
 #   cmake -D SUBMISSIONS=/path/to/class -P tests/grade_batch.cmake
 #
 # Optional: -D BUILD_DIR=... (default build/batch), -D GRADEBOOK=... (default BUILD_DIR/gradebook.csv),
-# -D CHAPTERS="01;02" (default: every chapter), -D GENERATOR="Visual Studio 17 2022" (default: Ninja
-# where it is installed, else CMake's default for the platform).
+# -D EXERCISES=... (default exercises.csv beside the gradebook), -D CHAPTERS="01;02" (default: every
+# chapter), -D GENERATOR="Visual Studio 17 2022" (default: Ninja where it is installed, else CMake's
+# default for the platform).
 # One build folder serves every student: switching RT_EXERCISES_DIR rebuilds only the exercises.
 # A student whose chapter is missing or does not compile scores 0 there, with every case of that
 # chapter listed; the batch goes on, printing each student's total as it goes.
-# Each student's results.json, junit.xml and report.html are kept under BUILD_DIR/students/NAME/,
-# and BUILD_DIR/class.html links them all.
+# Each student's results.json, junit.xml, report.html and chapters' results files (NN.results) are
+# kept under BUILD_DIR/students/NAME/, and BUILD_DIR/class.html links them all; below the students,
+# it gives each exercise's share at full marks, mean points and most failed cases (grade_report
+# --class-page computes them from the results files), also written to EXERCISES as CSV.
 get_filename_component(source_dir "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT SUBMISSIONS OR NOT IS_DIRECTORY "${SUBMISSIONS}")
   message(FATAL_ERROR "grade_batch: SUBMISSIONS=${SUBMISSIONS} is not a folder (-D SUBMISSIONS=/path/to/class)")
@@ -21,8 +24,13 @@ endif()
 if(NOT GRADEBOOK)
   set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
 endif()
+if(NOT EXERCISES)
+  get_filename_component(book_dir "${GRADEBOOK}" DIRECTORY)
+  set(EXERCISES "${book_dir}/exercises.csv")
+endif()
 set(class_rows "${BUILD_DIR}/class-rows.html")
-file(REMOVE "${GRADEBOOK}" "${class_rows}")
+file(REMOVE "${GRADEBOOK}" "${EXERCISES}" "${class_rows}")
+set(graded "")
 # Any generator serves: Ninja where there is one, else the platform's (make, or Visual Studio, which
 # builds several configurations: hence --config and -C below).
 set(generator "")
@@ -59,6 +67,11 @@ foreach(entry IN LISTS entries)
     message(WARNING "grade_batch: the kit did not build for ${student}; they are not graded")
     continue()
   endif()
+  # Only this student's chapters' results (an earlier batch may have graded other chapters).
+  file(GLOB stale "${BUILD_DIR}/grade-results/*.results")
+  if(stale)
+    file(REMOVE ${stale})
+  endif()
   set(ENV{RT_GRADEBOOK} "${GRADEBOOK}")
   set(ENV{RT_STUDENT} "${student}")
   set(ENV{RT_CLASS_ROWS} "${class_rows}")
@@ -73,23 +86,30 @@ foreach(entry IN LISTS entries)
   endif()
   string(REGEX REPLACE "total +" "" total "${total}")
   message(STATUS "${student}: ${total}")
+  file(REMOVE_RECURSE "${BUILD_DIR}/students/${student}")
   file(MAKE_DIRECTORY "${BUILD_DIR}/students/${student}")
-  file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" "${BUILD_DIR}/report.html"
+  file(GLOB chapter_results "${BUILD_DIR}/grade-results/*.results")
+  file(COPY "${BUILD_DIR}/results.json" "${BUILD_DIR}/junit.xml" "${BUILD_DIR}/report.html" ${chapter_results}
     DESTINATION "${BUILD_DIR}/students/${student}")
+  list(APPEND graded "${BUILD_DIR}/students/${student}")
 endforeach()
 # The class's page: every student's total, linking to their own report (images embedded in each),
 # and each chapter's points, flagged where a file is missing, does not compile, is untouched, or
-# had a case stopped (rows written by grade_report).
-set(rows "")
-if(EXISTS "${class_rows}")
-  file(READ "${class_rows}" rows)
+# had a case stopped (rows written by grade_report); then each exercise's statistics over the
+# students graded in this batch, from their results files.
+file(GLOB report LIST_DIRECTORIES false "${BUILD_DIR}/tests/grade_report" "${BUILD_DIR}/tests/grade_report.exe"
+  "${BUILD_DIR}/tests/*/grade_report.exe")
+if(NOT report)
+  message(WARNING "grade_batch: the kit never built (no grade_report under ${BUILD_DIR}/tests): no class page")
+  return()
 endif()
-file(WRITE "${BUILD_DIR}/class.html" "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>The class</title>
-<style>body{font-family:sans-serif;margin:2em}td,th{border:1px solid #ccc;padding:0.3em 0.6em}table{border-collapse:collapse}
-td.ok{background:#dfd}td.part{background:#ffd}td.flag{background:#fdd}small{color:#733}</style>
-</head><body><h1>The class</h1><p>Gradebook: gradebook.csv. A chapter's cell is flagged with what an instructor
-should look at: no file, does not compile, untouched (still the handed-out stubs), an exercise still its
-stub, a case stopped by its time limit or crashed.</p>
-<table>\n${rows}</table></body></html>\n")
+list(GET report 0 report)
+execute_process(COMMAND "${report}" --class-page "${BUILD_DIR}/class.html" --class-rows "${class_rows}"
+    --link-gradebook "${GRADEBOOK}" --exercises-csv "${EXERCISES}" ${graded}
+  RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "grade_batch: the class page could not be written (${rc})")
+endif()
 message(STATUS "class report: ${BUILD_DIR}/class.html")
 message(STATUS "gradebook: ${GRADEBOOK}")
+message(STATUS "per exercise: ${EXERCISES}")

@@ -13,20 +13,74 @@
 // page (batch grading): the student's points per chapter, each marked with what went wrong there.
 // With --classroom-output FILE it appends GitHub Classroom's `result=` line to a step's output
 // file, and with --step-summary FILE the points as Markdown to the job's summary (classroom.hpp).
+//
+// After a batch, the class page and what the class did per exercise (class_stats.hpp):
+//
+//   grade_report --class-page class.html --class-rows ROWS --link-gradebook gradebook.csv
+//                --exercises-csv exercises.csv STUDENT_FOLDER...
+//
+// Each student's folder (named after the student) holds their chapters' results files (NN.results);
+// ROWS is the students' table that --class-row appended to; the page links both CSV files.
+#include "tests/grader/class_stats.hpp"
 #include "tests/grader/classroom.hpp"
 #include "tests/grader/html_report.hpp"
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <sstream>
 #include <vector>
+
+namespace {
+
+// The class page and the exercises' CSV from every student's folder of results files.
+int write_class(const std::string& page, const std::string& rows_path, const std::string& gradebook,
+                const std::string& exercises_csv, const std::vector<std::string>& folders)
+{
+    using namespace rt::grader;
+    namespace fs = std::filesystem;
+    std::vector<StudentResults> students;
+    for (const std::string& folder : folders) {
+        std::vector<std::string> files;
+        std::error_code error;
+        for (const fs::directory_entry& entry : fs::directory_iterator(folder, error))
+            if (entry.path().extension() == ".results")
+                files.push_back(entry.path().string());
+        if (error)
+            return std::cerr << "grade_report: " << folder << ": cannot list its results files\n", 2;
+        std::sort(files.begin(), files.end());
+        StudentResults student;
+        if (!read_student_results(fs::path(folder).lexically_normal().filename().string(), files, student))
+            return std::cerr << "grade_report: " << folder << ": a results file cannot be read\n", 2;
+        students.push_back(student);
+    }
+    const std::vector<ExerciseStats> stats = class_stats(students);
+    if (!exercises_csv.empty()) {
+        if (!write_exercises_csv(exercises_csv, stats))
+            return std::cerr << "grade_report: " << exercises_csv << ": cannot write\n", 2;
+        std::cout << "wrote " << exercises_csv << '\n';
+    }
+    std::ostringstream rows;
+    if (std::ifstream in{rows_path})
+        rows << in.rdbuf();
+    if (!write_class_page(page, rows.str(), stats, gradebook, exercises_csv))
+        return std::cerr << "grade_report: " << page << ": cannot write\n", 2;
+    std::cout << "wrote " << page << '\n';
+    return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
     using namespace rt::grader;
     std::string json, junit, gradebook, student, html, class_row, title = "Grade", classroom_output, step_summary;
+    std::string class_page, class_rows, link_gradebook, exercises_csv;
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
@@ -48,12 +102,22 @@ int main(int argc, char** argv)
             classroom_output = argv[++k];
         else if (arg == "--step-summary" && k + 1 < argc)
             step_summary = argv[++k];
+        else if (arg == "--class-page" && k + 1 < argc)
+            class_page = argv[++k];
+        else if (arg == "--class-rows" && k + 1 < argc)
+            class_rows = argv[++k];
+        else if (arg == "--link-gradebook" && k + 1 < argc)
+            link_gradebook = argv[++k];
+        else if (arg == "--exercises-csv" && k + 1 < argc)
+            exercises_csv = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
             std::cerr << "grade_report: unknown option '" << arg << "'\n";
             return 2;
         } else
             inputs.push_back(arg);
     }
+    if (!class_page.empty())
+        return write_class(class_page, class_rows, link_gradebook, exercises_csv, inputs);
     std::vector<CaseResult> results;
     int missing = 0;
     for (const std::string& path : inputs)

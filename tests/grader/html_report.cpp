@@ -1,6 +1,8 @@
 #include "tests/grader/html_report.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -68,6 +70,33 @@ std::string picture_figures(const std::string& output)
                 << "</figcaption></figure>";
     }
     return out.str();
+}
+
+// A file as a link from the page at `page`: its path relative to the page's folder, with the bytes
+// a URL cannot carry as they are (a space, #, ?, %) percent-encoded.
+std::string relative_href(const std::string& file, const std::string& page)
+{
+    namespace fs = std::filesystem;
+    std::error_code ignored;
+    const fs::path target = fs::absolute(file, ignored).lexically_normal();
+    fs::path relative = target.lexically_relative(fs::absolute(page, ignored).lexically_normal().parent_path());
+    const std::string path = (relative.empty() ? target : relative).generic_string();
+    std::string href;
+    for (const unsigned char c : path) {
+        if (std::isalnum(c) || std::strchr("-._~/", c))
+            href += static_cast<char>(c);
+        else {
+            static const char* hex = "0123456789ABCDEF";
+            href += {'%', hex[c >> 4], hex[c & 15]};
+        }
+    }
+    return href;
+}
+
+std::string link(const std::string& file, const std::string& page)
+{
+    return "<a href=\"" + escape_xml(relative_href(file, page)) + "\">" +
+           escape_xml(std::filesystem::path(file).filename().string()) + "</a>";
 }
 
 }  // namespace
@@ -148,6 +177,35 @@ bool append_class_row(const std::string& path, const std::string& student, const
         out << "</td>";
     }
     out << "</tr>\n";
+    return static_cast<bool>(out);
+}
+
+bool write_class_page(const std::string& path, const std::string& student_rows, const std::vector<ExerciseStats>& exercises,
+                      const std::string& gradebook, const std::string& exercises_csv)
+{
+    std::ofstream out(path);
+    out << R"(<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>The class</title>
+<style>body{font-family:sans-serif;margin:2em;color:#222}td,th{border:1px solid #ccc;padding:0.3em 0.6em;vertical-align:top;text-align:left}
+table{border-collapse:collapse;margin:0.5em 0 1.5em}td.ok{background:#dfd}td.part{background:#ffd}td.flag{background:#fdd}small{color:#733}
+table.exercises td:nth-child(-n+4){white-space:nowrap}table.exercises ol{margin:0;padding-left:1.4em}table.exercises code{font-size:85%;color:#555}</style>
+</head><body><h1>The class</h1>
+<p>Gradebook: )"
+        << link(gradebook, path) << R"(. A chapter's cell is flagged with what an instructor
+should look at: no file, does not compile, untouched (still the handed-out stubs), an exercise still its
+stub, a case stopped by its time limit or crashed.</p>
+<table>
+)" << student_rows
+        << R"(</table>
+<h2>Each exercise</h2>
+<p>Per exercise (also in )"
+        << link(exercises_csv, path) << R"(): how many students have every point of it, the class's mean points
+(of the exercise's maximum), and the cases most often failed, each with how many students failed it and the
+first line of its message (the line most of them got). A student whose chapter file is missing or does not
+compile counts as 0 points for each of its exercises, as does one whose cases all ran the handed-out stubs:
+they are counted under <em>not graded</em>, not among those who failed a case.</p>
+)" << exercises_table_html(exercises)
+        << "</body></html>\n";
     return static_cast<bool>(out);
 }
 

@@ -3,6 +3,7 @@
 // embedded (data URIs), so the page can be copied, mailed or uploaded whole.
 #pragma once
 
+#include "tests/grader/class_stats.hpp"
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
 
@@ -22,5 +23,10 @@ std::string case_output_html(const CaseResult& result);
 // their total, linking to students/NAME/report.html, then each chapter's points with its marks
 // (a missing file, a compile failure, untouched stubs, a stopped or crashed case) flagged.
 bool append_class_row(const std::string& path, const std::string& student, const std::vector<ChapterMark>& chapters);
+
+// The class page: the gradebook and the exercises' CSV as links (relative to the page), the
+// students' table (the rows append_class_row wrote), then the exercises' table (class_stats.hpp).
+bool write_class_page(const std::string& path, const std::string& student_rows, const std::vector<ExerciseStats>& exercises,
+                      const std::string& gradebook, const std::string& exercises_csv);
 
 }  // namespace rt::grader
