@@ -172,10 +172,9 @@ private:
     // The surface area heuristic's split of a group: its objects binned by centre along each axis
     // their centres spread along, in one pass (as Embree's builder bins, after Wald, "On fast
     // Construction of SAH-based Bounding Volume Hierarchies", 2007), the best plane of each axis
-    // (10.2), the cheapest of those unless 10.3 says leaf. Three axes with these counts of bins
-    // made the teapot in a stadium's closest hits 1.12-1.13x faster than 12 bins along the axis the
-    // centres spread along most (the lesson's step 8). Fills in the children and the split's axis;
-    // false: a leaf.
+    // (10.2), the cheapest of those unless 10.3 says leaf. Three axes rather than one: a better
+    // tree (step 8 of the lesson's "Where a query's time goes"; measured in
+    // chapters/benchmark/README.md). Fills in the children and the split's axis; false: a leaf.
     bool sah_split(const Group& g, int depth, int& axis, Group& left, Group& right)
     {
         // Embree's count (BinMapping in its kernels/builders/heuristic_binning.h: the lesser of its

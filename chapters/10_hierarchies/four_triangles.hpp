@@ -1,12 +1,11 @@
 // A leaf's triangles four to a block (given), for the four-triangle test of EXERCISE 10.6.
 //
-// With four boxes tested for the price of one (wide_bvh.hpp), the triangle test is over half of a
-// query through the wide tree: about 270 instructions a test, one triangle at a time, each asked
-// through the object list (its kind, its corners gathered from the scene's arrays, 02.5's frame
-// worked out again). Embree stores a leaf's triangles four to a block, corner by corner and axis by
-// axis, and tests the four with one pass of SIMD instructions (Wald et al., "Embree: A Kernel
-// Framework for Efficient CPU Ray Tracing", 2014). This file is the kit's block, and the ray's frame
-// worked out once per query; the test of a block is yours (10.6).
+// Why: with four boxes tested for the price of one (wide_bvh.hpp), the triangle test, one triangle
+// at a time, is most of what is left of a query. Embree stores a leaf's triangles four to a block,
+// corner by corner and axis by axis, and tests the four with one pass of SIMD instructions (Wald et
+// al., "Embree", 2014). This file is the kit's block, and the ray's frame worked out once per query;
+// the test of a block is yours (10.6). Step 6 of the lesson's "Where a query's time goes"; the
+// measurements are in chapters/benchmark/README.md, "Chapter 10's steps".
 #pragma once
 
 #include "02_spheres_triangles/objects.hpp"

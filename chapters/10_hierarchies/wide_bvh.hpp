@@ -1,14 +1,9 @@
 // The next step after 10.4 (given): the same tree, four children to a node, their four boxes tested
-// at once.
-//
-// A binary tree tested one box at a time spends most of a query stepping from node to node: about
-// 66 instructions a visit, 36 of them the slab test ("Where a query's time goes" in the lesson).
-// Production tracers (Embree: Wald et al., "Embree: A Kernel Framework for Efficient CPU Ray
-// Tracing", 2014; Dammertz et al., "Shallow Bounding Volume Hierarchies for Fast SIMD Ray Tracing
-// of Incoherent Rays", 2008) make the tree four or eight wide: a node's children's boxes lie in
-// arrays of four, one per plane (all four min x, then all four min y, ...), so one pass of the
-// slab test runs the same instructions on four boxes, each of them one SSE instruction on x86. A
-// query takes about a quarter of the binary tree's steps, each testing four boxes.
+// at once, as Embree's trees are (Wald et al., "Embree", 2014; Dammertz et al., "Shallow Bounding
+// Volume Hierarchies", 2008). Why: a binary tree spends most of a query stepping from node to node,
+// one box at a time, and four boxes in arrays of four, plane by plane, cost one pass of the slab
+// test (one SSE instruction each on x86). Step 5 of the lesson's "Where a query's time goes"; the
+// measurements are in chapters/benchmark/README.md, "Chapter 10's steps".
 //
 // The tree is your BVH (10.1-10.3), collapsed: each wide node takes a binary node's two children,
 // and opens the largest of them that is not a leaf (by surface area, the child a ray is likeliest
@@ -21,8 +16,8 @@
 // Its leaves are the binary tree's; a leaf of triangles only is copied into blocks of four
 // (four_triangles.hpp) at the build, its node pointing at them, and a query that asks for the
 // watertight test (chapter 04 on) tests each block with your 10.6, four triangles in one pass, then
-// asks each lane hit what the one-by-one loop asks an object, nearest first for a closest hit, in the
-// leaf's order for an any-hit query ("Four triangles at once" in the lesson).
+// asks each lane hit what the one-by-one loop asks an object ("Four triangles at once" in the
+// lesson).
 #pragma once
 
 #include "10_hierarchies/bvh.hpp"
@@ -68,11 +63,9 @@ constexpr int wide_stack_size = 3 * bvh_stack_size + 1;
 
 // Asks the processor to start loading `bytes` from p into its cache, and goes on: the wide tree
 // asks it for each child it pushes (its node, or its leaf's first block), which then arrives while
-// the nearer children are walked. On a mountain of half a million triangles (34 MB of tree), where
-// a visit waits on memory, that made queries 5% (incoherent rays) to 9% (primary) faster; on the
-// pyramid and the stadium, whose trees are about 1.5 MB, it moved them by -2% to +2%, within the
-// noise (medians of three alternating runs, two sets). Where the lanes are plain C++ (not x86),
-// nothing is asked.
+// the nearer children are walked. Why: on a tree larger than the cache a visit waits on memory
+// (step 7; measured in chapters/benchmark/README.md, "Chapter 10's steps"). Where the lanes are
+// plain C++ (not x86), nothing is asked.
 inline void prefetch(const void* p, std::size_t bytes)
 {
 #if RT_WIDE_SSE
