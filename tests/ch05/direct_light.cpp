@@ -338,3 +338,103 @@ GRADED_TEST("direct_light: a floor seen from below is lit by a light below it, i
     CHECK(e.mean == dvec3(0.0));
     CHECK(e.feelers == 0);
 }
+
+GRADED_TEST("direct_light: a sample the least float from the point (d^2 = 2^-149, the least positive float) sends its feeler; one exactly at the point sends none", "05.4", 1)
+{
+    // d > 0 is the clause: the sample at the point itself is skipped, any other one is not, however
+    // near. The one random sample of seed_half is u = (0.557..., 1/2): the point centre + 0.114 axis_u
+    // + 0 axis_v. axis_v = (-8192, 0, 0) is long (so that the light's area, 2^-61, and its normal stay
+    // normal floats) but is multiplied by 2 * 1/2 - 1 = 0; axis_u = (0, 0, 2^-76) moves the sample by
+    // 0.114 * 2^-76, whose square is far below the least float. The centre is h = 1.5 * 2^-75 above
+    // the point, so d^2 = h^2 = 2.25 * 2^-150 rounds to 2^-149.
+    const point3 p{0.25f, 0.0f, 0.0f};
+    const FloorView v = exact_floor_view(p);
+    const LightSampling one{1, SampleScheme::random};
+    const float h = std::ldexp(1.5f, -75), side = std::ldexp(1.0f, -76);
+    const AreaLight hair = rectangle_light(p + vec3(0.0f, h, 0.0f), {0.0f, 0.0f, side}, {-8192.0f, 0.0f, 0.0f}, warm);
+    {
+        Rng check_rng(seed_half, 7);
+        const float x = check_rng.next_float(), y = check_rng.next_float();
+        const vec3 to_light{0.0f, h, (2.0f * x - 1.0f) * side};
+        const float d2 = glm::dot(to_light, to_light);
+        INFO("the seeded stream's first two numbers are " << x << " and " << y << ", the sample " << show(to_light)
+             << " from the point, d^2 = " << d2 << "; the case needs y = 0.5 and d^2 = 2^-149");
+        REQUIRE(y == 0.5f);
+        REQUIRE(d2 == std::ldexp(1.0f, -149));
+        REQUIRE(std::isnormal(light_area(hair)));
+    }
+    const Estimate near = estimate(v, hair, one, 1, seed_half);
+    INFO("direct_light at " << show(v.hit.p) << " (floor normal (0, 1, 0)) from " << show(hair) << ", " << show(one)
+         << ": its one sample lies " << h << " straight above the point (d^2 = 2^-149, the least positive float, n.l > 0, "
+         << "cos_light > 0): it sent " << near.feelers << " shadow feelers, expected 1 (only a sample at distance 0 is skipped); "
+         << "it returned (" << near.mean.x << ", " << near.mean.y << ", " << near.mean.z << "), expected no NaN");
+    CHECK(near.feelers == 1);
+    CHECK(!std::isnan(near.mean.x));
+    const AreaLight none = disc_light(p, down, 0.0f, warm);
+    const Estimate at = estimate(v, none, stratified16, 1, seed_half);
+    INFO("direct_light at " << show(v.hit.p) << " from " << show(none) << ", " << show(stratified16)
+         << ": every sample is the point itself (d = 0): it sent " << at.feelers << " shadow feelers, expected none, "
+         << "and returned (" << at.mean.x << ", " << at.mean.y << ", " << at.mean.z << "), expected 0");
+    CHECK(at.feelers == 0);
+    CHECK(at.mean == dvec3(0.0));
+}
+
+GRADED_TEST("direct_light: a light the least float above the surface's plane and facing it (n.l = cos_light = 2^-149) gets a feeler a sample; the least float below it, or facing up, none", "05.4", 1)
+{
+    // The boundaries n.l > 0 and cos_light > 0 at the float's own resolution: a light 1 x 1 lying flat
+    // beside the point, 2 to 3 away, at the height H = 2^-148 (the least float but one). Every point
+    // of it, by any way of writing 05.1, lies exactly H above the floor, so l.y = H / d rounds to
+    // 2^-149, the least positive float: n.l = 2^-149 > 0, and for the light glowing down
+    // cos_light = l.y = 2^-149 > 0 too. At -H both are negative; glowing up, cos_light is.
+    const point3 p{0.25f, 0.0f, 0.0f};
+    const FloorView v = exact_floor_view(p);
+    const float H = std::ldexp(1.0f, -148);
+    const vec3 along_x{0.5f, 0.0f, 0.0f}, along_z{0.0f, 0.0f, 0.5f};
+    for (const auto& [height, glows_down, feelers, why] :
+         {std::tuple<float, bool, std::uint64_t, const char*>{H, true, 16, "n.l = cos_light = 2^-149 > 0 for every sample: one feeler a sample"},
+          {-H, true, 0, "the light lies 2^-148 below the floor's plane: n.l = -2^-149 < 0, skip each sample"},
+          {H, false, 0, "the light glows up, away from the point below it: cos_light = -2^-149 < 0, skip each sample"}}) {
+        const point3 centre = p + vec3(2.5f, height, 0.0f);
+        const AreaLight flat = glows_down ? rectangle_light(centre, along_x, along_z, warm)
+                                          : rectangle_light(centre, along_z, along_x, warm);
+        const Estimate e = estimate(v, flat, stratified16, 1, 78);
+        INFO("direct_light at " << show(v.hit.p) << " (floor normal (0, 1, 0)) from " << show(flat) << ", "
+             << show(stratified16) << ", every sample " << height << " above the floor and 2 to 3 away: it sent "
+             << e.feelers << " shadow feelers, expected " << feelers << ": " << why);
+        CHECK(e.feelers == feelers);
+        CHECK(!std::isnan(e.mean.x));
+    }
+}
+
+GRADED_TEST("direct_light: an eye ray climbing the least float (n.dir = 2^-149) sees the floor's underside, one sinking the least float its top", "05.4", 1)
+{
+    // The normal is turned toward the eye as chapter 04's shade turns it: when n.dir > 0 the ray came
+    // from behind the surface. At the float's resolution: the ray climbing 2^-149 per unit (from
+    // 4 * 2^-149 below the floor) sees the underside, lit by a light below; the one sinking 2^-149
+    // sees the top, lit by a light above.
+    const point3 p{0.25f, 0.0f, 0.0f};
+    FloorView v = exact_floor_view(p);
+    v.hit.n = v.hit.ng = vec3(0.0f, 1.0f, 0.0f);
+    const float least = std::ldexp(1.0f, -149);
+    const AreaLight above = disc_light(p + vec3(0.3f, 2.0f, 0.1f), down, 0.5f, warm);
+    const AreaLight below = disc_light(p + vec3(0.3f, -2.0f, 0.1f), {0, 1, 0}, 0.5f, warm);
+    for (const float climb : {least, -least}) {
+        const vec3 dir{0.0f, climb, -1.0f};
+        v.ray = Ray{p - 4.0f * dir, dir};
+        REQUIRE(glm::dot(v.hit.n, v.ray.dir) == climb);
+        const bool underside = climb > 0.0f;
+        for (const AreaLight* light : {&above, &below}) {
+            const bool lights = (light == &below) == underside;
+            const Estimate e = estimate(v, *light, stratified16, 10, 77);
+            INFO("direct_light at " << show(v.hit.p) << " (floor normal (0, 1, 0)) seen along " << show(v.ray.dir)
+                 << " (n.dir = " << climb << ", so the eye is " << (underside ? "below" : "above") << " the floor) from "
+                 << show(*light) << ", " << show(stratified16) << " over 10 calls: got (" << e.mean.x << ", " << e.mean.y
+                 << ", " << e.mean.z << ") with " << e.feelers << " shadow feelers; expected "
+                 << (lights ? "light and 160 feelers" : "0 and no feeler") << ": with n turned toward the eye, "
+                 << (underside ? "(0, -1, 0)" : "(0, 1, 0)") << ", the light " << (lights ? "falls on" : "lies behind")
+                 << " the side the eye sees");
+            CHECK(e.feelers == (lights ? 160u : 0u));
+            CHECK((lights ? e.mean.x > 0.0 : e.mean == dvec3(0.0)));
+        }
+    }
+}

@@ -132,3 +132,34 @@ STABILITY_TEST("point_on_disc: never a NaN, at the square's centre (0/0 in the c
          << std::hypot(corner.x, corner.y) << " radii from the centre; expected the rim, 1");
     CHECK(std::abs(std::hypot(corner.x, corner.y) - 1.0) <= 1e-5);
 }
+
+GRADED_TEST("point_on_disc: uniform points on the disc, each of 4 rings by 16 sectors (64 cells of equal area) gets 1/64 of them", "05.2", 2)
+{
+    // Uniform over the whole disc, not only ring by ring and sector by sector: the cells between
+    // radii sqrt((i-1)/4) and sqrt(i/4) and angles 22.5 degrees apart all have the area pi / 64. A
+    // map whose angles crowd toward the axes inside each quarter (phi = (pi / 4) (a b) for a / b)
+    // keeps the 8 sectors even but not their halves.
+    constexpr double pi = 3.14159265358979323846;
+    constexpr int cells_draws = 100000;
+    const double p = 1.0 / 64.0, allowed = z_allowed * std::sqrt(p * (1.0 - p) / cells_draws);
+    for (const AreaLight& light : {tilted, ceiling}) {
+        Rng rng(56, 0);
+        std::vector<int> cells(64, 0);
+        for (int k = 0; k < cells_draws; ++k) {
+            const sample2 u{rng.next_float(), rng.next_float()};
+            const OnLight on = on_light(light, point_on_disc(light, u));
+            const double r2 = on.x * on.x + on.y * on.y;
+            const double turn = (std::atan2(on.y, on.x) + pi) / (2.0 * pi);
+            const int ring = std::min(3, static_cast<int>(r2 * 4.0)), sector = std::min(15, static_cast<int>(turn * 16.0));
+            ++cells[ring * 16 + sector];
+        }
+        for (int c = 0; c < 64; ++c) {
+            const double share = static_cast<double>(cells[c]) / cells_draws;
+            INFO(show(light) << ": of " << cells_draws << " uniform u, a share " << share << " landed between "
+                 << std::sqrt((c / 16) / 4.0) << " and " << std::sqrt((c / 16 + 1) / 4.0) << " radii from the centre and "
+                 << -180 + 22.5 * (c % 16) << " to " << -157.5 + 22.5 * (c % 16) << " degrees around axis_u, a 64th of "
+                 << "the disc's area; expected " << p << " within " << allowed << " (5 standard errors)");
+            CHECK(std::abs(share - p) <= allowed);
+        }
+    }
+}
