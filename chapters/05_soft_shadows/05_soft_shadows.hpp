@@ -29,7 +29,11 @@ namespace rt {
 // equal areas of the light, and uniform u give uniform points on it.
 // The lesson's section "Points on a rectangle (EXERCISE 05.1)" derives it.
 // Precision: in the light's plane, and at the right place along each half-axis, within 1e-5 of a
-// half-axis, for lights 1e-4 to 1e5 across.
+// half-axis, for lights 1e-4 to 1e5 across. On the centre lines, exact: a u whose y is 1/2 lies
+// on the centre's line along axis_u with no rounding across it (centre.z exactly, for a light whose
+// axis_v is along z), and likewise u.x = 1/2 along axis_v; a light standing across a surface, its
+// centre line in the surface's plane, then has samples exactly in that plane (05.4's feelers
+// depend on it).
 // Example: centre (0, 3, 0), axis_u (0.5, 0, 0), axis_v (0, 0, 0.25): u = (0, 0) gives
 // (-0.5, 3, -0.25), u = (0.75, 0.25) gives (0.25, 3, -0.125).
 // DETAIL BEGIN: how, step by step (kept by an introductory course's handout, CONTRACTS=detailed)
@@ -50,7 +54,8 @@ point3 point_on_rectangle(const AreaLight& light, sample2 u);
 //  - Every point lies in the light's plane and within its radius (within 1e-5 of it), and the
 //    points reach the rim: the square's far corner u = (one_minus_epsilon, one_minus_epsilon)
 //    lands on it.
-//  - Never a NaN, even at the square's centre u = (1/2, 1/2), which goes to the light's centre.
+//  - Never a NaN, even at the square's centre u = (1/2, 1/2), where the concentric map's ratio is
+//    0 / 0 (it goes to the light's centre).
 // Example (the concentric map, a disc of radius 1 at (0, 3, 0), axis_u (1, 0, 0), axis_v (0, 0, 1)):
 // u = (1/2, 1/2) gives (0, 3, 0); u = (1, 1/2) gives (1, 3, 0) on the rim along axis_u; u = (1, 1)
 // gives (0.7071, 3, 0.7071). A quarter of uniform points land within half the radius.

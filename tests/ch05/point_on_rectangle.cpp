@@ -80,3 +80,19 @@ STABILITY_TEST("point_on_rectangle: lights 1e-4 and 1e5 across keep every point 
         }
     }
 }
+
+GRADED_TEST("point_on_rectangle: a u with one coordinate 1/2 lies exactly on the light's centre line, no rounding across it", "05.1", 1)
+{
+    // Centre z 0.1 and axis_v (0, 0, 0.3): from the corner, 0.1 - 0.3 + 0.3 rounds to 0.099999994.
+    const AreaLight upright = rectangle_light({0.7f, 2.0f, 0.1f}, {0.35f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.3f}, color(1.0f));
+    for (const float along : {0.0f, 0.125f, 0.3f, 0.75f, 1.0f}) {
+        const point3 on_u_line = point_on_rectangle(upright, {along, 0.5f});
+        const point3 on_v_line = point_on_rectangle(upright, {0.5f, along});
+        INFO(show(upright) << ": u = (" << along << ", 1/2) gave " << show(on_u_line) << ", u = (1/2, " << along
+             << ") gave " << show(on_v_line) << "; expected z exactly " << upright.centre.z << " and x exactly "
+             << upright.centre.x << " (on a centre line (2 u - 1) is exactly 0: nothing to round)");
+        CHECK(on_u_line.z == upright.centre.z);
+        CHECK(on_v_line.x == upright.centre.x);
+        CHECK(on_u_line.y == upright.centre.y);
+    }
+}
