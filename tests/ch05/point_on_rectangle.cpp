@@ -94,5 +94,9 @@ GRADED_TEST("point_on_rectangle: a u with one coordinate 1/2 lies exactly on the
         CHECK(on_u_line.z == upright.centre.z);
         CHECK(on_v_line.x == upright.centre.x);
         CHECK(on_u_line.y == upright.centre.y);
+        // And at the right place along the line (within rounding), so that the centre alone is no answer.
+        const float s = 2.0f * along - 1.0f;
+        CHECK(same_point(on_u_line, upright.centre + s * upright.axis_u, 10.0f));
+        CHECK(same_point(on_v_line, upright.centre + s * upright.axis_v, 10.0f));
     }
 }
