@@ -138,3 +138,48 @@ GRADED_TEST("local_shading: n.l exactly 0 gives black; a light the least bit abo
         CHECK((glm::dot(up, l) > 0.0f) == (got.x > 0.0f));
     }
 }
+
+GRADED_TEST("local_shading: a light the least bit off straight opposite the eye keeps its halfway vector and highlight, however short l + v is", "04.1", 1)
+{
+    // Only l exactly opposite v has no halfway vector. Here l + v = (0, 0, d) with d = 2^-74.5
+    // (rounded to float): its squared length is the least float, 2^-149, and not 0, so
+    // h = normalize(l + v) = (0, 0, 1) and n.h = 0.6. A threshold on |l + v| (a "too short to
+    // normalise" test) drops this highlight.
+    const PhongMaterial plastic{{0.6f, 0.5f, 0.4f}, color(0.8f), 2.0f};
+    const vec3 n{0.0f, 0.8f, 0.6f};
+    const float d = static_cast<float>(std::ldexp(std::sqrt(2.0), -75));
+    const vec3 l{0.6f, 0.8f, 0.0f}, v{-0.6f, -0.8f, d};
+    const vec3 halfway = l + v;
+    const color got = local_shading(plastic, n, v, l, color(1.0f));
+    const color want = reference(plastic, n, v, l, color(1.0f));
+    const color diffuse_alone = plastic.diffuse * glm::dot(n, l);
+    INFO(query(plastic, n, v, l, color(1.0f)) << ": l + v = " << show(halfway) << ", its squared length "
+         << glm::dot(halfway, halfway) << " (not 0: l is not exactly opposite v), so the halfway vector is (0, 0, 1) and n.h = 0.6; got "
+         << show(got) << ", expected " << show(want) << " (the diffuse term alone would be " << show(diffuse_alone) << ")");
+    REQUIRE(glm::dot(halfway, halfway) > 0.0f);
+    CHECK(same_colour(got, want));
+}
+
+GRADED_TEST("local_shading: a halfway vector the least bit above the surface (n.h = the least float) keeps its highlight; at n.h = 0 or below, none", "04.1", 1)
+{
+    // max(0, n.h)^p is positive for every n.h > 0: with p = 0.5 the least float, 2^-149, gives
+    // 2^-74.5, seen here in a light of 1e20. The normal is (1, 0, 0), the light grazes it at
+    // n.l = 2^-149, the eye lies in the surface (or the least bit below it), and l + v has length 1,
+    // so n.h is l_x + v_x exactly. No diffuse colour, so what comes back is the highlight alone.
+    const PhongMaterial gloss{color(0.0f), {0.5f, 0.6f, 0.7f}, 0.5f};
+    const vec3 n{1.0f, 0.0f, 0.0f};
+    const float least = std::numeric_limits<float>::denorm_min();
+    const vec3 l{least, 1.0f, 0.0f};
+    const color light(1e20f);
+    for (const float eye_x : {0.0f, -least, -2.0f * least}) {
+        const vec3 v{eye_x, -0.5f, 0.866025388f};
+        const color got = local_shading(gloss, n, v, l, light);
+        const color want = reference(gloss, n, v, l, light);
+        const bool above = l.x + eye_x > 0.0f;
+        INFO(query(gloss, n, v, l, light) << ": n.h = " << l.x + eye_x << ", got " << show(got) << ", expected " << show(want)
+             << (above ? " (the halfway vector is above the surface: k_s (n.h)^0.5 times the light)"
+                       : " (black: the halfway vector is not above the surface)"));
+        CHECK(same_colour(got, want));
+        CHECK(above == (got.x > 0.0f));
+    }
+}

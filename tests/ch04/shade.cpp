@@ -6,6 +6,7 @@
 #include "tests/ch04/describe.hpp"
 
 #include <cmath>
+#include <limits>
 
 using namespace rt;
 using namespace rt::grader;
@@ -188,4 +189,85 @@ GRADED_TEST("shade: passes its feeler settings to light_blocked as they are: wit
          << " after 0: the settings go to light_blocked unchanged, and it answers not blocked");
     CHECK(same_colour(got, want));
     CHECK(shadow_rays() == 0);
+}
+
+GRADED_TEST("shade: a ray exactly along the surface (n.dir = 0) keeps the hit's normal; one the least bit upward (n.dir = the least float) turns it", "04.4", 1)
+{
+    // The normal is turned only when n.dir > 0. Along the floor (dir = (1, 0, 0)) it stays up: the
+    // light above lights the point, the one below gets no feeler. A ray rising by the least float
+    // came from below the floor: the normal turns down, and the light below lights the point.
+    const float least = std::numeric_limits<float>::denorm_min();
+    const LitScene floor = floor_scene({});
+    const Hit found = look_at(floor, {0, 2, 5}, {0.5f, 0, 0.3f}).second;
+    REQUIRE(found.p.y == 0.0f);
+    const PointLight above{found.p + vec3(1, 4, 2), color(16.0f)}, below{found.p + vec3(-1, -3, 1), color(9.0f)};
+    for (const float rise : {0.0f, least}) {
+        LitScene scene = floor_scene({above, below});
+        const vec3 dir{1.0f, rise, 0.0f};
+        const Ray ray{found.p - 3.0f * dir, dir};
+        Hit hit = found;
+        hit.t = 3.0f;
+        const vec3 seen = rise > 0.0f ? vec3(0, -1, 0) : vec3(0, 1, 0);
+        reset_counters();
+        const color got = shade(scene, ray, hit, given_feelers);
+        const std::uint64_t sent = shadow_rays();
+        const color want = plastic.diffuse * scene.ambient + lit_by(ray, hit, seen, rise > 0.0f ? below : above);
+        INFO("shade: " << describe(scene, ray, hit) << ": n.dir = " << glm::dot(hit.n, ray.dir) << ", so the side seen faces "
+             << show(seen) << "; got " << show(got) << " after " << sent << " shadow feelers, expected " << show(want)
+             << " after 1 (only the light " << (rise > 0.0f ? "below" : "above") << " the floor lights it)");
+        CHECK(same_colour(got, want));
+        CHECK(sent == 1);
+    }
+}
+
+GRADED_TEST("shade: a light exactly at the point gets no feeler; one the least bit away (d^2 = the least float) gets one and lights by intensity / d^2", "04.4", 1)
+{
+    // At the point there is no direction to the light: it adds nothing and costs no feeler. At
+    // d = 2^-74.5 above it (rounded to float), d^2 is the least float, 2^-149, not 0: the light is
+    // straight above, and an intensity of 1e-38 arrives as 1e-38 / 2^-149, about 7e6.
+    const float d = static_cast<float>(std::ldexp(std::sqrt(2.0), -75));
+    const LitScene floor = floor_scene({});
+    const auto [ray, hit] = look_at(floor, {0, 2, 5}, {0.5f, 0, 0.3f});
+    REQUIRE(hit.p.y == 0.0f);
+    for (const float height : {0.0f, d}) {
+        const LitScene scene = floor_scene({PointLight{hit.p + vec3(0.0f, height, 0.0f), color(1e-38f)}});
+        const vec3 to_light = scene.lights[0].position - hit.p;
+        const bool lights = height > 0.0f;
+        reset_counters();
+        const color got = shade(scene, ray, hit, given_feelers);
+        const std::uint64_t sent = shadow_rays();
+        const color want = plastic.diffuse * scene.ambient + (lights ? lit_by(ray, hit, {0, 1, 0}, scene.lights[0]) : color(0.0f));
+        INFO("shade: " << describe(scene, ray, hit) << ": d^2 = " << glm::dot(to_light, to_light) << "; got " << show(got)
+             << " after " << sent << " shadow feelers, expected " << show(want) << " after " << (lights ? 1 : 0)
+             << (lights ? " (the light is above the point, however near)" : " (the light is at the point itself)"));
+        REQUIRE(glm::dot(to_light, to_light) == (lights ? std::numeric_limits<float>::denorm_min() : 0.0f));
+        CHECK(same_colour(got, want));
+        CHECK(sent == (lights ? 1u : 0u));
+    }
+}
+
+GRADED_TEST("shade: a light the least bit above the surface's plane (n.l = the least float) gets its feeler", "04.4", 1)
+{
+    // n.l > 0 is the test, nothing larger: a light 1 away whose height above the floor is the least
+    // float has n.l = 2^-149. It gets its feeler and adds its (tiny) share; one at height 0 does not.
+    const float least = std::numeric_limits<float>::denorm_min();
+    const LitScene floor = floor_scene({});
+    const auto [ray, hit] = look_at(floor, {0, 2, 5}, {0.5f, 0, 0.3f});
+    REQUIRE(hit.p.y == 0.0f);
+    for (const float height : {0.0f, least}) {
+        const LitScene scene = floor_scene({PointLight{hit.p + vec3(0.6f, height, -0.8f), color(5.0f)}});
+        const vec3 to_light = scene.lights[0].position - hit.p;
+        const float n_dot_l = to_light.y / glm::length(to_light);
+        const std::uint64_t feelers = height > 0.0f ? 1 : 0;
+        reset_counters();
+        const color got = shade(scene, ray, hit, given_feelers);
+        const std::uint64_t sent = shadow_rays();
+        const color want = plastic.diffuse * scene.ambient + (feelers ? lit_by(ray, hit, {0, 1, 0}, scene.lights[0]) : color(0.0f));
+        INFO("shade: " << describe(scene, ray, hit) << ": n.l = " << n_dot_l << "; got " << show(got) << " after " << sent
+             << " shadow feelers, expected " << show(want) << " after " << feelers
+             << (feelers ? " (the light is above the floor, by the least float)" : " (the light is in the floor's plane)"));
+        REQUIRE(n_dot_l == height);
+        CHECK(same_colour(got, want));
+        CHECK(sent == feelers);
+    }
 }
