@@ -27,7 +27,8 @@ namespace rt {
 //  - A light not above the surface (n.to_light <= 0, exactly 0 included) gives black, highlight
 //    included; one the least bit above it (n.to_light = 1e-30) keeps its highlight.
 //  - Where the halfway direction between light and eye points below the surface (the eye below
-//    it), there is no highlight: the diffuse term alone, also for a fractional shininess.
+//    it), or exactly along it (n.h = 0), there is no highlight: the diffuse term alone, also for a
+//    fractional shininess, and for a shininess of 0 (whose highlight is otherwise k_s all over).
 //  - With to_light exactly opposite to_eye there is no halfway direction, and no highlight: the
 //    diffuse term alone, finite. Never a NaN.
 // Precision: within a relative 1e-5 of the model computed in double.
@@ -39,8 +40,9 @@ namespace rt {
 //     light * (k_d max(0, n.l) + k_s max(0, n.h)^p),   h = normalize(l + v),
 // where n is the unit normal, l the unit vector toward the light, v the unit vector toward the eye,
 // k_d = m.diffuse, k_s = m.specular and p = m.shininess. Return black when n.l <= 0, before the
-// highlight. Clamp n.h to 0 before the power. When l + v is the zero vector, leave the highlight out
-// (normalising 0 gives a NaN).
+// highlight. Leave the highlight out when n.h <= 0 (clamping n.h to 0 before the power is the same
+// for a positive shininess, but pow(0, 0) is 1). When l + v is the zero vector, leave the highlight
+// out too (normalising 0 gives a NaN).
 // DETAIL END
 color local_shading(const PhongMaterial& m, const vec3& n, const vec3& to_eye, const vec3& to_light, const color& light);
 

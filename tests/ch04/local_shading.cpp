@@ -183,3 +183,23 @@ GRADED_TEST("local_shading: a halfway vector the least bit above the surface (n.
         CHECK(above == (got.x > 0.0f));
     }
 }
+
+GRADED_TEST("local_shading: a shininess of 0 gives k_s wherever the halfway vector is above the surface, and no highlight exactly along it (n.h = 0)", "04.1", 1)
+{
+    // pow(n.h, 0) is 1 for every n.h, 0 included: only the test n.h > 0 keeps the highlight off a
+    // halfway vector that lies in the surface. The normal is (1, 0, 0), the light grazes it at
+    // n.l = 2^-149 (no diffuse colour), and l + v has length 1, so n.h is l_x + v_x exactly.
+    const PhongMaterial matte_gloss{color(0.0f), {0.5f, 0.6f, 0.7f}, 0.0f};
+    const vec3 n{1.0f, 0.0f, 0.0f};
+    const float least = std::numeric_limits<float>::denorm_min();
+    const vec3 l{least, 1.0f, 0.0f};
+    for (const float eye_x : {0.0f, -least}) {
+        const vec3 v{eye_x, -0.5f, 0.866025388f};
+        const color got = local_shading(matte_gloss, n, v, l, color(1.0f));
+        const bool above = l.x + eye_x > 0.0f;
+        const color want = above ? matte_gloss.specular : color(0.0f);
+        INFO(query(matte_gloss, n, v, l, color(1.0f)) << ": n.h = " << l.x + eye_x << ", got " << show(got) << ", expected "
+             << show(want) << (above ? " (k_s: (n.h)^0 is 1 above the surface)" : " (black: n.h = 0 is not above the surface)"));
+        CHECK(same_colour(got, want));
+    }
+}
