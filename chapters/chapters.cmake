@@ -130,7 +130,7 @@ add_custom_target(trade DEPENDS ${trade_files})
 
 # The lessons' measured tables are the sweeps' own (common/lesson_table.hpp): after `trade`,
 # `cmake --build <build> --target lesson_tables_refresh` pastes each chapter's NN_name.tables.md into its
-# lesson between the table's markers. The test lessons.tables_NN holds every column but the timed
+# lesson between the table's markers, and copies its plot to chapters/NN_name/trade.png. The test lessons.tables_NN holds every column but the timed
 # ones to the code. Look at the diff before committing: the timed columns move with the machine.
 add_executable(lesson_tables "${CMAKE_SOURCE_DIR}/tests/lessons/lesson_tables.cpp")
 set_target_properties(lesson_tables PROPERTIES EXCLUDE_FROM_ALL ON)
@@ -138,10 +138,13 @@ set(lesson_table_files "")
 foreach(chapter IN LISTS RT_CHAPTERS)
   list(APPEND lesson_table_files "${RT_TRADE_DIR}/${chapter}.tables.md")
 endforeach()
+string(REPLACE ";" "," chapter_names "${RT_CHAPTERS}")
 add_custom_target(lesson_tables_refresh
   COMMAND lesson_tables refresh ${lesson_table_files} --kit "${CMAKE_SOURCE_DIR}"
+  COMMAND "${CMAKE_COMMAND}" -D "TRADE_DIR=${RT_TRADE_DIR}" -D "KIT=${CMAKE_SOURCE_DIR}" -D "CHAPTERS=${chapter_names}"
+    -P "${CMAKE_SOURCE_DIR}/chapters/lesson_plots.cmake"
   DEPENDS trade lesson_tables
-  COMMENT "Pasting the sweeps' tables into the lessons"
+  COMMENT "Pasting the sweeps' tables and plots into the lessons"
   VERBATIM)
 
 # The kit's NFF scenes (common/scenes/) rendered by every program from chapter 02 on, each with its
