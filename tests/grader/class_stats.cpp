@@ -39,14 +39,6 @@ std::string first_line(const std::string& output)
     return line;
 }
 
-std::string csv_field(const std::string& s)
-{
-    std::string out = "\"";
-    for (const char c : s)
-        out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + '"';
-}
-
 // One student's points on one exercise, and whether their own code ran in it.
 struct Attempt {
     int score = 0, max_score = 0;

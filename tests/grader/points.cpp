@@ -77,6 +77,14 @@ std::optional<CaseStatus> status_of_word(const std::string& word)
     return std::nullopt;
 }
 
+std::string csv_field(const std::string& s)
+{
+    std::string out = "\"";
+    for (const char c : s)
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + '"';
+}
+
 std::string escape_xml(const std::string& s)
 {
     std::string out;
@@ -153,7 +161,7 @@ bool append_gradebook_row(const std::string& path, const std::string& student, c
             out << ',' << entry.second;
         out << ',' << max_total << '\n';
     }
-    out << '"' << student << '"';
+    out << csv_field(student);
     for (const auto& entry : by_chapter)
         out << ',' << entry.second;
     out << ',' << total << '\n';

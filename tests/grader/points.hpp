@@ -61,6 +61,9 @@ std::string escape_xml(const std::string& s);
 // Text safe inside a JSON string (without the quotes): " \ and control characters escaped.
 std::string escape_json(const std::string& s);
 
+// s as one CSV field: in double quotes, each quote inside doubled (RFC 4180).
+std::string csv_field(const std::string& s);
+
 // A case's output as a student reads it: paths relative to the kit, and no more than the first
 // case_output_lines lines (or 4000 characters), then how many more there were.
 std::string tidy_output(std::string output);
