@@ -8,8 +8,9 @@
 
 namespace rt {
 
-// Why 1.5%: the figure's own ratio of aperture to focus distance (0.1 at about 7.6), which blurs
-// what lies half as far or twice as far as the plane of focus by a few percent of the image height.
+// Why 1.5%: a little more than the figure's own ratio of aperture to focus distance (0.1 at about
+// 7.6: 1.3%), which blurs what lies half as far or twice as far as the plane of focus by a few
+// percent of the image height.
 constexpr float nff_aperture_fraction = 0.015f;
 
 inline FocusScene focus_scene(const NffScene& nff)
