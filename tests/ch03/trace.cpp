@@ -14,17 +14,15 @@ using namespace rt::grader::traces;
 
 GRADED_TEST("trace: a ray that misses sees the sky; one that hits a dull wall sees its local shade, and no secondary ray is traced", "03.5", 3)
 {
-    WhittedScene scene = empty_scene();
-    const color wall_albedo{0.6f, 0.5f, 0.3f};
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, wall_albedo, Material{});
+    const WhittedScene scene = square_ahead(Material{});
     const TraceSettings settings;
 
-    const Traced miss = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, 1}}, settings);
+    const Traced miss = run(scene, Ray{head_on.origin, {0, 0, 1}}, settings);
     INFO(miss.report << "; expected the sky " << show(sky));
     CHECK(near(miss.colour, sky));
 
-    const color expected = lit(scene, wall_albedo, {0, 0, 1});
-    const Traced hit = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    const color expected = lit(scene, square_albedo, {0, 0, 1});
+    const Traced hit = run(scene, head_on, settings);
     INFO(hit.report << "; expected the wall's local shade " << show(expected) << " and no secondary rays");
     CHECK(near(hit.colour, expected));
     CHECK(hit.rays.reflected == 0);
@@ -244,14 +242,10 @@ GRADED_TEST("trace: a secondary ray whose weight is exactly min_weight is traced
 GRADED_TEST("trace: with min_weight 0 a surface with no mirror or glass share (k = 0) still traces no secondary ray", "03.5", 2)
 {
     // "Only when its k > 0": a dull wall has k_r = k_t = 0, and 0 >= min_weight = 0 must not let a
-    // ray through. The mirror beside it (k_s = 0.5) does trace its one.
-    WhittedScene scene = empty_scene();
-    const color wall_albedo{0.6f, 0.5f, 0.3f};
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, wall_albedo, Material{});
-    TraceSettings settings;
-    settings.min_weight = 0.0f;
-    const color expected = lit(scene, wall_albedo, {0, 0, 1});
-    const Traced dull = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    // ray through.
+    const WhittedScene scene = square_ahead(Material{});
+    const color expected = lit(scene, square_albedo, {0, 0, 1});
+    const Traced dull = run(scene, head_on, with_min_weight(0.0f));
     INFO(dull.report << "; a dull wall with min_weight 0: expected its local shade " << show(expected)
          << " and no secondary rays");
     CHECK(dull.rays.reflected == 0);
@@ -267,11 +261,11 @@ GRADED_TEST("trace: the search starts at secondary_t_min (1e-4): a surface neare
     const color red{0.9f, 0.1f, 0.1f}, grey{0.4f};
     for (const float d : {5e-5f, 2e-4f, 5e-4f}) {
         WhittedScene scene = empty_scene();
-        add_square(scene, {0, 0, -d}, {1, 0, 0}, {0, 1, 0}, 2.0f, red, Material{});
-        add_square(scene, {0, 0, -3}, {1, 0, 0}, {0, 1, 0}, 2.0f, grey, Material{});
+        add_square_across(scene, -d, red, Material{});
+        add_square_across(scene, -3.0f, grey, Material{});
         const bool sees_red = d > secondary_t_min;
         const color expected = lit(scene, sees_red ? red : grey, {0, 0, 1});
-        const Traced got = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, TraceSettings{});
+        const Traced got = run(scene, head_on, TraceSettings{});
         INFO(got.report << "; a red wall " << d << " ahead and a grey one 3 ahead: expected the "
              << (sees_red ? "red" : "grey") << " wall's shade " << show(expected) << " (secondary_t_min = "
              << secondary_t_min << ")");
@@ -313,16 +307,9 @@ GRADED_TEST("trace: a glass share as small as the least float (transparency 2^-1
     // denormal), met head-on, has k_t = 2^-149 (1 - F) = 2^-149 > 0 (F = 0.04): one refracted ray,
     // with min_weight 0 and with min_weight 2^-149 exactly (its weight is at least that). Its mirror
     // share 2^-149 F rounds to 0: no reflected ray.
-    WhittedScene scene = empty_scene();
-    const color albedo{0.6f, 0.5f, 0.3f};
-    Material glass;
-    glass.transparency = std::numeric_limits<float>::denorm_min();
-    glass.ior = 1.5f;
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
+    const WhittedScene scene = square_ahead(glass(1.5f, std::numeric_limits<float>::denorm_min()));
     for (const float min_weight : {0.0f, std::numeric_limits<float>::denorm_min()}) {
-        TraceSettings settings;
-        settings.min_weight = min_weight;
-        const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+        const Traced faint = run(scene, head_on, with_min_weight(min_weight));
         INFO(faint.report << "; glass of transparency 2^-149 (k_t = 2^-149 > 0, its weight 2^-149 >= min_weight) met "
                              "head-on: expected one refracted ray and no reflected one");
         CHECK(faint.rays.refracted == 1);
@@ -334,14 +321,8 @@ GRADED_TEST("trace: with min_weight 0 a mirror share as small as the least float
 {
     // "Only when its k > 0", one float step above 0: a mirror with k_s = 2^-149 (a denormal) and
     // min_weight 0 sends its one reflected ray; it adds next to nothing to the colour.
-    WhittedScene scene = empty_scene();
-    const color albedo{0.6f, 0.5f, 0.3f};
-    Material faint_mirror;
-    faint_mirror.mirror = std::numeric_limits<float>::denorm_min();
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, faint_mirror);
-    TraceSettings settings;
-    settings.min_weight = 0.0f;
-    const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    const WhittedScene scene = square_ahead(mirror(std::numeric_limits<float>::denorm_min()));
+    const Traced faint = run(scene, head_on, with_min_weight(0.0f));
     INFO(faint.report << "; a mirror of k_s = 2^-149 (> 0), min_weight 0: expected one reflected ray and no "
                          "refracted one");
     CHECK(faint.rays.reflected == 1);
@@ -353,15 +334,8 @@ GRADED_TEST("trace: with min_weight 0 a glass share that rounds to exactly 0 (tr
     // Head-on at ior 10, F = (9 / 11)^2 = 0.669: k_t = 2^-149 (1 - F) rounds to 0 and is no share
     // at all (k > 0 is the rule, and 0 >= min_weight = 0 must not let it through), while
     // k_r = 2^-149 F rounds to 2^-149 > 0: one reflected ray, no refracted one.
-    WhittedScene scene = empty_scene();
-    const color albedo{0.6f, 0.5f, 0.3f};
-    Material glass;
-    glass.transparency = std::numeric_limits<float>::denorm_min();
-    glass.ior = 10.0f;
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
-    TraceSettings settings;
-    settings.min_weight = 0.0f;
-    const Traced faint = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    const WhittedScene scene = square_ahead(glass(10.0f, std::numeric_limits<float>::denorm_min()));
+    const Traced faint = run(scene, head_on, with_min_weight(0.0f));
     INFO(faint.report << "; glass of transparency 2^-149 and ior 10 met head-on (k_t rounds to 0, k_r to 2^-149), "
                          "min_weight 0: expected one reflected ray and no refracted one");
     CHECK(faint.rays.refracted == 0);
@@ -373,16 +347,10 @@ GRADED_TEST("trace: a refracted ray carries weight times k_t: through two panes 
     // Two panes of glass (transparency 0.5, ior 1.5) across the ray, met head-on: F = 0.04, so
     // k_t = 0.48 and k_r = 0.02. The first refracted ray weighs 0.48 >= 0.3 and is traced; at the
     // second pane its own refracted ray would weigh 0.48 * 0.48 = 0.23 < 0.3: not traced.
-    WhittedScene scene = empty_scene();
-    const color albedo{0.6f, 0.5f, 0.3f};
-    Material glass;
-    glass.transparency = 0.5f;
-    glass.ior = 1.5f;
-    add_square(scene, {0, 0, -5}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
-    add_square(scene, {0, 0, -7}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, glass);
-    TraceSettings settings;
-    settings.min_weight = 0.3f;
-    const Traced panes = run(scene, Ray{{0.3f, 0.2f, 0}, {0, 0, -1}}, settings);
+    const Material pane = glass(1.5f, 0.5f);
+    WhittedScene scene = square_ahead(pane);
+    add_square_across(scene, -7.0f, square_albedo, pane);
+    const Traced panes = run(scene, head_on, with_min_weight(0.3f));
     INFO(panes.report << "; two glass panes, k_t = 0.48 each, min_weight 0.3: expected one refracted ray (weight "
                          "0.48) and not a second (0.23), no reflected ray (0.02)");
     CHECK(panes.rays.refracted == 1);

@@ -49,12 +49,36 @@ inline Material mirror(float k_s)
     return m;
 }
 
-inline Material glass(float ior)
+inline Material glass(float ior, float transparency = 1.0f)
 {
     Material m;
-    m.transparency = 1.0f;
+    m.transparency = transparency;
     m.ior = ior;
     return m;
+}
+
+// The scene most of 03.5's cases look at: a square of one material, 4 across, centred on the -z
+// axis at z = -5 (normal +z), and the ray that meets it head-on from (0.3, 0.2, 0).
+const color square_albedo{0.6f, 0.5f, 0.3f};
+const Ray head_on{{0.3f, 0.2f, 0}, {0, 0, -1}};
+
+inline void add_square_across(WhittedScene& scene, float z, const color& albedo, const Material& material)
+{
+    add_square(scene, {0, 0, z}, {1, 0, 0}, {0, 1, 0}, 2.0f, albedo, material);
+}
+
+inline WhittedScene square_ahead(const Material& material)
+{
+    WhittedScene scene = empty_scene();
+    add_square_across(scene, -5.0f, square_albedo, material);
+    return scene;
+}
+
+inline TraceSettings with_min_weight(float min_weight)
+{
+    TraceSettings settings;
+    settings.min_weight = min_weight;
+    return settings;
 }
 
 // Whitted's local term by hand: albedo (ambient + max(0, n.L) sun), n facing the ray.
