@@ -134,6 +134,20 @@ bool same_answer(const std::optional<TriangleHit<float>>& a, const std::optional
     return first_difference(a, b).empty();
 }
 
+// Calls check(ray, tri, want) for each ray aimed exactly at a shared vertex or edge of a jittered
+// icosphere and each face around what it is aimed at, want being the lesson's steps for the two.
+template <class Check>
+void for_each_vertex_and_edge_test(Check check)
+{
+    const IndexedMesh mesh = extremes::jittered_icosphere(15);
+    for (const extremes::TriangleProbes<float>& probes :
+         {extremes::vertex_aimed<float>(mesh, 40, 15), extremes::edge_aimed<float>(mesh, 20, 15)}) {
+        for (size_t k = 0; k < probes.rays.size(); ++k)
+            for (const int f : probes.targets[k])
+                check(probes.rays[k], probes.triangles[f], watertight_steps(probes.rays[k], probes.triangles[f], Interval{}));
+    }
+}
+
 }  // namespace
 
 GRADED_TEST("hit_triangle_watertight: an edge function that rounds to 0 in float is decided in double: all three recomputed and rounded to float, t, beta and gamma to the bit", "02.5", 2)
@@ -164,26 +178,17 @@ STABILITY_TEST("hit_triangle_watertight: wherever an edge function is 0 in float
 {
     // Rays aimed exactly at shared vertices and edges often make an edge function 0 in float (about
     // 17000 of 58000 tests here): each such answer must be what the lesson's steps give.
-    const IndexedMesh mesh = extremes::jittered_icosphere(15);
     int fell_back = 0;
-    for (const extremes::TriangleProbes<float>& probes :
-         {extremes::vertex_aimed<float>(mesh, 40, 15), extremes::edge_aimed<float>(mesh, 20, 15)}) {
-        for (size_t k = 0; k < probes.rays.size(); ++k)
-            for (const int f : probes.targets[k]) {
-                const Ray& ray = probes.rays[k];
-                const Triangle& tri = probes.triangles[f];
-                const WatertightSteps want = watertight_steps(ray, tri, Interval{});
-                if (!want.fell_back)
-                    continue;
-                ++fell_back;
-                const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
-                INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": an edge function is 0 in float; recomputed in "
-                     << "double and rounded to float, U = " << want.U << ", V = " << want.V << ", W = " << want.W
-                     << ".\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
-                     << first_difference(got, want.hit));
-                REQUIRE(same_answer(got, want.hit));
-            }
-    }
+    for_each_vertex_and_edge_test([&](const Ray& ray, const Triangle& tri, const WatertightSteps& want) {
+        if (!want.fell_back)
+            return;
+        ++fell_back;
+        const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
+        INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": an edge function is 0 in float; recomputed in "
+             << "double and rounded to float, U = " << want.U << ", V = " << want.V << ", W = " << want.W
+             << ".\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  " << first_difference(got, want.hit));
+        REQUIRE(same_answer(got, want.hit));
+    });
     INFO(fell_back << " tests took the double recomputation");
     CHECK(fell_back >= 1000);
 }
@@ -195,31 +200,23 @@ STABILITY_TEST("hit_triangle_watertight: where no edge function is 0 in float, U
     // four-lane test of 10.6 repeats to the bit. Recomputed in double and rounded back, a product
     // difference that cancels keeps digits float's products lost, and t, beta or gamma move by a
     // few last bits (here in hundreds of the tests below).
-    const IndexedMesh mesh = extremes::jittered_icosphere(15);
     int in_float = 0, telling = 0;
-    for (const extremes::TriangleProbes<float>& probes :
-         {extremes::vertex_aimed<float>(mesh, 40, 15), extremes::edge_aimed<float>(mesh, 20, 15)}) {
-        for (size_t k = 0; k < probes.rays.size(); ++k)
-            for (const int f : probes.targets[k]) {
-                const Ray& ray = probes.rays[k];
-                const Triangle& tri = probes.triangles[f];
-                const WatertightSteps want = watertight_steps(ray, tri, Interval{});
-                if (want.fell_back)
-                    continue;
-                ++in_float;
-                if (!same_answer(watertight_steps(ray, tri, Interval{}, true).hit, want.hit))
-                    ++telling;
-                const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
-                INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": no edge function is 0 in float, "
-                     << "so U = " << want.U << ", V = " << want.V << ", W = " << want.W << " as cross_2d gives them in float."
-                     << "\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
-                     << (same_answer(got, watertight_steps(ray, tri, Interval{}, true).hit) && !same_answer(got, want.hit)
-                             ? "that is the answer of U, V and W recomputed in double: only an edge function that is 0 "
-                               "in float is recomputed"
-                             : first_difference(got, want.hit)));
-                REQUIRE(same_answer(got, want.hit));
-            }
-    }
+    for_each_vertex_and_edge_test([&](const Ray& ray, const Triangle& tri, const WatertightSteps& want) {
+        if (want.fell_back)
+            return;
+        ++in_float;
+        if (!same_answer(watertight_steps(ray, tri, Interval{}, true).hit, want.hit))
+            ++telling;
+        const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
+        INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": no edge function is 0 in float, "
+             << "so U = " << want.U << ", V = " << want.V << ", W = " << want.W << " as cross_2d gives them in float."
+             << "\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
+             << (same_answer(got, watertight_steps(ray, tri, Interval{}, true).hit) && !same_answer(got, want.hit)
+                     ? "that is the answer of U, V and W recomputed in double: only an edge function that is 0 "
+                       "in float is recomputed"
+                     : first_difference(got, want.hit)));
+        REQUIRE(same_answer(got, want.hit));
+    });
     INFO(in_float << " tests stayed in float; in " << telling << " of them a double recomputation changes the answer");
     CHECK(telling >= 100);
 }
