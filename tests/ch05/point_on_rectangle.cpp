@@ -24,6 +24,21 @@ void check(const AreaLight& light, sample2 u, const point3& want, const char* wh
     CHECK(same_point(got, want, 10.0f));
 }
 
+// Requires point_on_rectangle(light, u) at (2 u.x - 1, 2 u.y - 1) in half-axes and on the light's
+// plane, within 1e-5 (off the plane, 1e-5 times `size`, the light's scale); returns the point.
+point3 require_at_half_axes(const AreaLight& light, sample2 u, double size)
+{
+    const point3 got = point_on_rectangle(light, u);
+    const OnLight on = on_light(light, got);
+    INFO(show(light) << ", " << show(u) << ": got " << show(got) << ", at (" << on.x << ", " << on.y
+         << ") in half-axes and " << on.off_plane << " off the light's plane; expected (" << 2 * u.x - 1 << ", "
+         << 2 * u.y - 1 << ") and 0");
+    REQUIRE(std::abs(on.x - (2.0 * u.x - 1.0)) <= 1e-5);
+    REQUIRE(std::abs(on.y - (2.0 * u.y - 1.0)) <= 1e-5);
+    REQUIRE(std::abs(on.off_plane) <= 1e-5 * size);
+    return got;
+}
+
 }  // namespace
 
 GRADED_TEST("point_on_rectangle: (0, 0) is the corner centre - axis_u - axis_v, (1/2, 1/2) the centre, u.x runs along axis_u", "05.1", 2)
@@ -45,17 +60,10 @@ GRADED_TEST("point_on_rectangle: any u lands at (2 u.x - 1, 2 u.y - 1) in half-a
     Rng rng(51, 0);
     for (int k = 0; k < 1000; ++k) {
         const sample2 u{rng.next_float(), rng.next_float()}, w{rng.next_float(), rng.next_float()};
-        const point3 got = point_on_rectangle(tilted, u);
-        const OnLight on = on_light(tilted, got);
-        INFO(show(tilted) << ", " << show(u) << ": got " << show(got) << ", at (" << on.x << ", " << on.y
-             << ") in half-axes and " << on.off_plane << " off the light's plane; expected (" << 2 * u.x - 1 << ", "
-             << 2 * u.y - 1 << ") and 0");
-        REQUIRE(std::abs(on.x - (2.0 * u.x - 1.0)) <= 1e-5);
-        REQUIRE(std::abs(on.y - (2.0 * u.y - 1.0)) <= 1e-5);
-        REQUIRE(std::abs(on.off_plane) <= 1e-5);
+        const point3 got = require_at_half_axes(tilted, u, 1.0);
         const point3 mid = point_on_rectangle(tilted, 0.5f * (u + w));
         const point3 want = 0.5f * (got + point_on_rectangle(tilted, w));
-        INFO("the point of the midpoint of " << show(u) << " and " << show(w) << " is " << show(mid)
+        INFO(show(tilted) << ": the point of the midpoint of " << show(u) << " and " << show(w) << " is " << show(mid)
              << ", expected the midpoint of their points, " << show(want));
         REQUIRE(same_point(mid, want, 10.0f));
     }
@@ -69,14 +77,7 @@ STABILITY_TEST("point_on_rectangle: lights 1e-4 and 1e5 across keep every point 
             rectangle_light(size * point3(0.3f, 2.0f, -0.7f), size * vec3(0.6f, 0.0f, 0.8f), size * vec3(0.0f, 0.25f, 0.0f), color(1.0f));
         for (int k = 0; k < 1000; ++k) {
             const sample2 u = k == 0 ? sample2(one_minus_epsilon) : sample2(rng.next_float(), rng.next_float());
-            const point3 got = point_on_rectangle(light, u);
-            const OnLight on = on_light(light, got);
-            INFO(show(light) << ", " << show(u) << ": got " << show(got) << ", at (" << on.x << ", " << on.y
-                 << ") in half-axes and " << on.off_plane << " off the plane; expected (" << 2 * u.x - 1 << ", "
-                 << 2 * u.y - 1 << ") and 0");
-            REQUIRE(std::abs(on.x - (2.0 * u.x - 1.0)) <= 1e-5);
-            REQUIRE(std::abs(on.y - (2.0 * u.y - 1.0)) <= 1e-5);
-            REQUIRE(std::abs(on.off_plane) <= 1e-5 * size);
+            require_at_half_axes(light, u, size);
         }
     }
 }
