@@ -144,9 +144,7 @@ GRADED_TEST("closest_in_cell: in the walk's last cell a hit past the box's face 
     // Object 6, a triangle in x = 3.001, is hit at t = 4.001: past the box's face x = 3 (t = 4),
     // where rounding can put a hit on that face. Listed in cell 2, the walk's last cell, whose
     // next boundary is that face (t_max = 4 = t_end): cell_exit() is the range's end there.
-    const std::vector<Triangle> triangles = {across, across, across,
-                                             Triangle{{3.001f, -1, -1}, {3.001f, 3, -1}, {3.001f, -1, 3}}};
-    const Objects o = objects_over(spheres, triangles);
+    const Objects o = objects_with_one_past_the_box();
     ObjectHit h;
     REQUIRE(o.intersect(6, ray, all, h));
     check_in({{}, {}, {6}}, walk_in(2), all, o, true, 6, h.t,

@@ -22,6 +22,14 @@ const std::vector<Triangle> triangles = {across, across, across};
 
 inline Objects objects() { return objects_over(spheres, triangles); }
 
+// The same with object 6, a triangle in x = 3.001: hit at t = 4.001, past the box's face x = 3
+// (t = 4), where rounding can put a hit on that face. Only the walk's last cell, which reaches to
+// the range's end, keeps it.
+const std::vector<Triangle> triangles_with_one_past_the_box = {
+    across, across, across, Triangle{{3.001f, -1, -1}, {3.001f, 3, -1}, {3.001f, -1, 3}}};
+
+inline Objects objects_with_one_past_the_box() { return objects_over(spheres, triangles_with_one_past_the_box); }
+
 // The grid with `lists[c]` in cell c.
 inline Grid grid_of(const std::vector<std::vector<std::uint32_t>>& lists)
 {

@@ -143,9 +143,7 @@ GRADED_TEST("closest_in_hashed_cell: a hit exactly at the cell's exit is kept, o
 {
     // Triangle 3 in x = 1 is hit at exactly t = 2, where cell 0 ends; triangle 6 in x = 3.001 at
     // t = 4.001, past the box's face x = 3 (t = 4), in the walk's last cell 2.
-    const std::vector<Triangle> triangles = {across, across, across,
-                                             Triangle{{3.001f, -1, -1}, {3.001f, 3, -1}, {3.001f, -1, 3}}};
-    const Objects o = objects_over(spheres, triangles);
+    const Objects o = objects_with_one_past_the_box();
     ObjectHit past;
     REQUIRE(o.intersect(6, ray, all, past));
     const Hashed h = hashed({{3}, {}, {6}});
