@@ -7,10 +7,34 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::traces;
+
+namespace {
+
+// Between the facing mirrors with k_s = 0.5, whose reflected rays weigh exactly 0.5, 0.25, 0.125,
+// ..., at max_depth 16: with `min_weight`, expects `rays` reflected rays and the colour sum x L (sum
+// is 1 + 0.5 + ... over the bounces traced). `why`, where given, says which ray is on the boundary.
+void check_cut_off_between_halving_mirrors(float min_weight, int rays, float sum, const char* why = nullptr)
+{
+    const color L = mirror_albedo * ambient;
+    TraceSettings settings;
+    settings.max_depth = 16;
+    settings.min_weight = min_weight;
+    const Traced got = run(facing_mirrors(0.5f), between_mirrors, settings);
+    std::ostringstream boundary;
+    if (why)
+        boundary << std::setprecision(9) << " (min_weight " << min_weight << "; " << why << ")";
+    INFO(got.report << boundary.str() << "; mirrors of k_s = 0.5: expected " << rays << " reflected rays and "
+         << show(sum * L));
+    CHECK(got.rays.reflected == static_cast<std::uint64_t>(rays));
+    CHECK(near(got.colour, sum * L));
+}
+
+}  // namespace
 
 GRADED_TEST("trace: a ray that misses sees the sky; one that hits a dull wall sees its local shade, and no secondary ray is traced", "03.5", 3)
 {
@@ -82,22 +106,9 @@ GRADED_TEST("trace: between two facing mirrors the recursion stops after max_dep
 GRADED_TEST("trace: a ray whose weight would fall below min_weight is not traced, whatever max_depth allows", "03.5", 3)
 {
     // Mirrors with k_s = 0.5: the reflected rays weigh 0.5, 0.25, 0.125, 0.0625, ...
-    const WhittedScene mirrors = facing_mirrors(0.5f);
-    const color L = mirror_albedo * ambient;
-    struct Case {
-        float min_weight;
-        int rays;
-        float sum;  // 1 + 0.5 + ... over the bounces traced
-    };
-    for (const Case& c : {Case{0.3f, 1, 1.5f}, Case{0.1f, 3, 1.875f}, Case{0.01f, 6, 1.984375f}}) {
-        TraceSettings settings;
-        settings.max_depth = 16;
-        settings.min_weight = c.min_weight;
-        const Traced got = run(mirrors, between_mirrors, settings);
-        INFO(got.report << "; mirrors of k_s = 0.5: expected " << c.rays << " reflected rays and " << show(c.sum * L));
-        CHECK(got.rays.reflected == static_cast<std::uint64_t>(c.rays));
-        CHECK(near(got.colour, c.sum * L));
-    }
+    check_cut_off_between_halving_mirrors(0.3f, 1, 1.5f);
+    check_cut_off_between_halving_mirrors(0.1f, 3, 1.875f);
+    check_cut_off_between_halving_mirrors(0.01f, 6, 1.984375f);
     // Glass head-on reflects F = 0.04: with min_weight 0.05 only the refracted rays are traced,
     // in and out, and 0.96^2 of the sky comes through.
     TraceSettings settings;
@@ -215,28 +226,14 @@ STABILITY_TEST("trace: no NaN or infinity in the figure at depth 16 with no cut-
 GRADED_TEST("trace: a secondary ray whose weight is exactly min_weight is traced (at least); one float step short of it is not", "03.5", 2)
 {
     // Mirrors with k_s = 0.5: the reflected rays weigh exactly 0.5, 0.25, 0.125, ...
-    const WhittedScene mirrors = facing_mirrors(0.5f);
-    const color L = mirror_albedo * ambient;
-    struct Case {
-        float min_weight;
-        int rays;
-        float sum;  // 1 + 0.5 + ... over the bounces traced
-        const char* why;
-    };
-    for (const Case& c : {Case{0.25f, 2, 1.75f, "the second ray weighs 0.25, exactly min_weight: traced"},
-                          Case{std::nextafter(0.25f, 1.0f), 1, 1.5f, "the second ray weighs 0.25, one float step below min_weight: not traced"},
-                          Case{std::nextafter(0.25f, 0.0f), 2, 1.75f, "the second ray weighs 0.25, one float step above min_weight: traced"},
-                          Case{0.5f, 1, 1.5f, "the first ray weighs 0.5, exactly min_weight: traced"},
-                          Case{std::nextafter(0.5f, 1.0f), 0, 1.0f, "the first ray weighs 0.5, just below min_weight: not traced"}}) {
-        TraceSettings settings;
-        settings.max_depth = 16;
-        settings.min_weight = c.min_weight;
-        const Traced got = run(mirrors, between_mirrors, settings);
-        INFO(got.report << std::setprecision(9) << " (min_weight " << c.min_weight << "; " << c.why
-             << "); mirrors of k_s = 0.5: expected " << c.rays << " reflected rays and " << show(c.sum * L));
-        CHECK(got.rays.reflected == static_cast<std::uint64_t>(c.rays));
-        CHECK(near(got.colour, c.sum * L));
-    }
+    check_cut_off_between_halving_mirrors(0.25f, 2, 1.75f, "the second ray weighs 0.25, exactly min_weight: traced");
+    check_cut_off_between_halving_mirrors(std::nextafter(0.25f, 1.0f), 1, 1.5f,
+                                          "the second ray weighs 0.25, one float step below min_weight: not traced");
+    check_cut_off_between_halving_mirrors(std::nextafter(0.25f, 0.0f), 2, 1.75f,
+                                          "the second ray weighs 0.25, one float step above min_weight: traced");
+    check_cut_off_between_halving_mirrors(0.5f, 1, 1.5f, "the first ray weighs 0.5, exactly min_weight: traced");
+    check_cut_off_between_halving_mirrors(std::nextafter(0.5f, 1.0f), 0, 1.0f,
+                                          "the first ray weighs 0.5, just below min_weight: not traced");
 }
 
 GRADED_TEST("trace: with min_weight 0 a surface with no mirror or glass share (k = 0) still traces no secondary ray", "03.5", 2)
