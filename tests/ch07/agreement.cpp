@@ -4,8 +4,6 @@
 #include "07_uniform_grid/figure.hpp"
 #include "tests/ch07/agreement.hpp"
 
-#include <filesystem>
-
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::agreement;
@@ -18,9 +16,7 @@ const Build grid{"the grid", [](const Objects& objects, float lambda) { return s
 
 GRADED_TEST("the grid answers every ray as brute force does, object and t, on the kit's scene files", "07.A", 4)
 {
-    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
-        if (entry.path().extension() == ".nff")
-            check_scene(grid, read_nff(entry.path().string()), 1500);
+    check_scene_files(grid, RT_NFF_SCENES_DIR, 1500);
 }
 
 GRADED_TEST("the grid answers every ray as brute force does on the generated sphereflake, pyramid, tree and mountain", "07.A", 4)

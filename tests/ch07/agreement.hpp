@@ -7,6 +7,7 @@
 #include "common/random.hpp"
 #include "tests/ch07/describe.hpp"
 
+#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -93,6 +94,14 @@ inline void check_scene(const Build& build, const NffScene& nff, int rays_per_la
     INFO(nff.name << " (" << objects_of(scene, lit_tests).size() << " objects): " << d.wrong << " of " << d.rays
          << " rays answered differently from brute force; the first: " << d.first);
     CHECK(d.wrong == 0);
+}
+
+// check_scene on each scene file (*.nff) in `folder`: the kit's, RT_NFF_SCENES_DIR, in the chapters' tests.
+inline void check_scene_files(const Build& build, const std::string& folder, int rays_per_lambda)
+{
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().extension() == ".nff")
+            check_scene(build, read_nff(entry.path().string()), rays_per_lambda);
 }
 
 // Twin triangles (every tie to the lower number), a floor 1e4 across under 200 spheres of radius

@@ -5,7 +5,6 @@
 #include "08_mailboxing/figure.hpp"
 #include "tests/ch07/agreement.hpp"
 
-#include <filesystem>
 #include <limits>
 
 using namespace rt;
@@ -23,9 +22,7 @@ std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]
 
 GRADED_TEST("the grid with mailboxes answers every ray as brute force does, on the kit's scenes and generated ones", "08.A", 4)
 {
-    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
-        if (entry.path().extension() == ".nff")
-            check_scene(mailboxed, read_nff(entry.path().string()), 800);
+    check_scene_files(mailboxed, RT_NFF_SCENES_DIR, 800);
     check_scene(mailboxed, generated_scene(write_sticks, 1, "sticks 1"), 800);
     check_scene(mailboxed, generated_scene(write_tree, 3, "tree 3"), 500);
     check_scene(mailboxed, generated_scene(write_mountain, 4, "mountain 4"), 500);

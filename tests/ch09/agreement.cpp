@@ -3,8 +3,6 @@
 #include "09_hashed_voxels/figure.hpp"
 #include "tests/ch07/agreement.hpp"
 
-#include <filesystem>
-
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::agreement;
@@ -19,9 +17,7 @@ const Build hashed{"the hashed grid",
 
 GRADED_TEST("the hashed grid answers every ray as brute force does, on the kit's scenes and generated ones", "09.A", 4)
 {
-    for (const auto& entry : std::filesystem::directory_iterator(RT_NFF_SCENES_DIR))
-        if (entry.path().extension() == ".nff")
-            check_scene(hashed, read_nff(entry.path().string()), 600);
+    check_scene_files(hashed, RT_NFF_SCENES_DIR, 600);
     check_scene(hashed, generated_scene(write_stadium, 2, "stadium 2"), 600);
     check_scene(hashed, generated_scene(write_mountain, 4, "mountain 4"), 400);
 }
