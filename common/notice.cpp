@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstdio>
 #include <mutex>
+#include <stdexcept>
 
 namespace rt {
 
@@ -10,18 +11,50 @@ namespace {
 
 std::atomic<bool> notices_on{true};
 std::mutex print_mutex;
+std::vector<std::string>* captured = nullptr;  // a NoticeCapture's lines, under print_mutex
 
 }  // namespace
 
 void notice(const std::string& line)
 {
+    const std::lock_guard<std::mutex> lock(print_mutex);
+    if (captured)
+        captured->push_back(line);
     if (!notices_on.load(std::memory_order_relaxed))
         return;
-    const std::lock_guard<std::mutex> lock(print_mutex);
     std::fprintf(stderr, "%s\n", line.c_str());
     std::fflush(stderr);
 }
 
 void set_notices(bool on) { notices_on.store(on, std::memory_order_relaxed); }
+
+NoticeCapture::NoticeCapture()
+{
+    const std::lock_guard<std::mutex> lock(print_mutex);
+    if (captured)
+        throw std::logic_error("NoticeCapture: one at a time");
+    captured = new std::vector<std::string>;
+}
+
+NoticeCapture::~NoticeCapture()
+{
+    const std::lock_guard<std::mutex> lock(print_mutex);
+    delete captured;
+    captured = nullptr;
+}
+
+std::vector<std::string> NoticeCapture::lines() const
+{
+    const std::lock_guard<std::mutex> lock(print_mutex);
+    return *captured;
+}
+
+bool NoticeCapture::said(const std::string& words) const
+{
+    for (const std::string& line : lines())
+        if (line.find(words) != std::string::npos)
+            return true;
+    return false;
+}
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rt {
 
@@ -14,5 +15,20 @@ void notice(const std::string& line);
 
 // Turns the kit's notices off (the grader) or back on; they are on when a program starts.
 void set_notices(bool on);
+
+// Keeps every notice said while it lives, whether notices are printed or off (the grader's): a test
+// checks what a build said. One at a time; the lines are also printed as before, if notices are on.
+class NoticeCapture {
+public:
+    NoticeCapture();
+    ~NoticeCapture();
+    NoticeCapture(const NoticeCapture&) = delete;
+    NoticeCapture& operator=(const NoticeCapture&) = delete;
+
+    // The lines said so far, in order.
+    std::vector<std::string> lines() const;
+    // Whether some line said so far contains `words`.
+    bool said(const std::string& words) const;
+};
 
 }  // namespace rt

@@ -13,6 +13,9 @@ namespace rt::ch09 {
 
 constexpr int figure_stadium_depth = 5;
 
+static_assert(dense_grid_lambda == ch07::default_lambda,
+              "the hashed grid weighs its memory against chapter 07's grid at that grid's default lambda");
+
 // Why 256 cells per object: on the stadium (the lesson's table 09.structures) the hashed grid
 // renders about ten times faster than at the dense grid's 4 (where the small mesh fills a few
 // cells), with 86% of its cells empty; 1024 tests fewer objects per ray but takes 3.4 times the

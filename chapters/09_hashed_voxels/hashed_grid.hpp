@@ -2,19 +2,23 @@
 // hold, only its occupied cells stored, in a hash table of M buckets (cell p in bucket p mod M),
 // and one bit per cell saying whether to look there at all.
 //
-// The build sorts every (cell, object) reference by cell, makes one HashedCell per occupied cell,
-// and files the cells by bucket with a counting sort: three flat arrays and the bit array.
+// The build sets the bit array, sorts every (cell, object) reference by cell, makes one HashedCell
+// per occupied cell, and files the cells by bucket with a counting sort: three flat arrays and the
+// bits. Before any of the large ones, it weighs what they will take against chapter 07's dense grid
+// and says so when that is many times more (say_memory_weighed).
 #pragma once
 
 #include "02_spheres_triangles/scene_query.hpp"
 #include "07_uniform_grid/grid.hpp"
 #include "09_hashed_voxels/09_hashed_voxels.hpp"
 #include "common/error.hpp"
+#include "common/notice.hpp"
 #include "common/stats.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -31,6 +35,8 @@ struct HashedGridStats {
     std::uint32_t M = 1;
     long long collisions = 0;  // cells filed in a bucket that already held one
     std::size_t table_bytes = 0, bits_bytes = 0, bytes = 0;
+    std::size_t peak_bytes = 0;   // the most the build held at once (hashed_build_bytes)
+    std::size_t dense_bytes = 0;  // chapter 07's dense grid's build at dense_grid_lambda, same objects
     double build_seconds = 0.0;
 };
 
@@ -47,6 +53,54 @@ inline std::uint32_t prime_at_least(std::uint64_t n)
         if (prime)
             return static_cast<std::uint32_t>(m);
     }
+}
+
+// The lambda of chapter 07's dense grid the hashed grid's memory is weighed against: its default
+// (ch07::default_lambda, chapter 07's figure.hpp; chapter 09's figure.hpp checks they agree).
+constexpr float dense_grid_lambda = 4.0f;
+
+// Why 8 times: where the hashed grid does what it is for, each object smaller than a cell, a box
+// straddles at most 2 cells an axis, 8 in all. At 8 references an object, each in a cell of its
+// own, its build holds about 24 + 8 x 44 + 32 bytes an object (hashed_build_bytes, while the cells
+// are filed: a range; for each reference its object number, 4, its cell twice, by address and in
+// the table, 24, and two bucket words for each, M being about twice the cells, 16; and 256 cells of
+// bits), against the dense grid's at least 28 + 32 + 4 (a number and a range; two words for each of
+// its 4 cells an object; one reference): about 6 times. Past 8 times, objects are listed in more
+// cells than a box smaller than a cell can reach: the finer cells slice them rather than sort them
+// apart, and the memory grows with lambda.
+constexpr double hashed_memory_factor = 8.0;
+
+// Why 64 MB: below it a build's memory concerns no machine the kit runs on, whatever the ratio
+// (chapter 07's dense grid alone may take 128 MB of offsets, max_grid_cells). As below
+// grid_pays_floor tests a ray, a scene of a few thousand objects keeps the lambda it asks for
+// without a word. The chapter's figure, the stadium at lambda 256, holds 37 MB at its peak, 24
+// times its dense grid's 1.5 MB: the memory that buys its tenfold speed.
+constexpr double hashed_memory_floor = 64e6;
+
+// The most the hashed grid's build holds at once, in bytes, from its counts: each object's range of
+// cells (kept through the build) and the bits (set first), then, while the references are sorted,
+// their 8-byte keys, the 4-byte object numbers and the 12-byte cells by address; or, while the cells
+// are filed, the object numbers, the cells by address, the table's cells, its M + 1 bucket offsets
+// and the filing's M cursors; whichever is more. Exact but for the allocator's own overhead.
+inline std::size_t hashed_build_bytes(long long objects, long long references, long long occupied, long long cells,
+                                      std::uint32_t M)
+{
+    const double kept = static_cast<double>(objects) * sizeof(CellRange) +
+                        static_cast<double>((cells + 63) / 64) * sizeof(std::uint64_t);
+    const double R = static_cast<double>(references), occ = static_cast<double>(occupied);
+    const double sorting = R * (sizeof(std::uint64_t) + sizeof(std::uint32_t)) + occ * sizeof(HashedCell);
+    const double filing = R * sizeof(std::uint32_t) + 2 * occ * sizeof(HashedCell) +
+                          (2.0 * M + 1) * sizeof(std::uint32_t);
+    return static_cast<std::size_t>(kept + std::max(sorting, filing));
+}
+
+// The most chapter 07's dense grid's build (build_grid) holds at once: each object's number and range
+// of cells, the cells' offsets (cells + 1) and the listing's cursor (cells), and the references.
+inline std::size_t dense_build_bytes(long long objects, long long references, long long cells)
+{
+    return static_cast<std::size_t>(static_cast<double>(objects) * (sizeof(std::uint32_t) + sizeof(CellRange)) +
+                                    (2.0 * cells + 1) * sizeof(std::uint32_t) +
+                                    static_cast<double>(references) * sizeof(std::uint32_t));
 }
 
 class HashedGrid final : public Accelerator {
@@ -110,6 +164,8 @@ public:
             << "table_bytes=" << s.table_bytes << '\n'
             << "bits_bytes=" << s.bits_bytes << '\n'
             << "bytes=" << s.bytes << '\n'
+            << "build_peak_bytes=" << s.peak_bytes << '\n'
+            << "dense_grid_peak_bytes=" << s.dense_bytes << '\n'
             << "build_seconds=" << s.build_seconds << '\n';
     }
     const HashTable& table() const { return table_; }
@@ -143,16 +199,21 @@ private:
         return true;
     }
 
-    // The build in four phases: the grid's shape (chapter 07's plan), the references sorted into
-    // one HashedCell per occupied cell, the cells filed by bucket, and the occupancy bits.
+    // The build in five phases: the grid's shape (chapter 07's plan), the occupancy bits, the memory
+    // weighed, the references sorted into one HashedCell per occupied cell, and the cells filed by
+    // bucket.
     void build(const Objects& objects, float lambda, std::uint32_t table_size)
     {
         const Timer timer;
-        const GridPlan plan = plan_shape(objects, lambda);
+        const Bounds scene = bounds_of_all(objects);
+        const GridPlan plan = plan_shape(objects, scene, lambda);
         shape_ = plan.shape;
-        const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references);
-        const long long collisions = file_by_bucket(by_address, table_size);
-        set_bits(by_address);
+        // The bits first: they count the occupied cells, so that what the build will hold is known
+        // before any of its large arrays is allocated.
+        const long long occupied = set_bits(shape_, plan.ranges, bits_);
+        const std::size_t dense = weigh_memory(objects, scene, plan, occupied, lambda, table_size);
+        const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references, occupied);
+        const long long collisions = file_by_bucket(by_address, table_size_for(table_size, occupied));
 
         const HashTable& t = table_;
         stats_.objects = objects.size();
@@ -167,16 +228,17 @@ private:
                              t.object_index.size() * sizeof(std::uint32_t);
         stats_.bits_bytes = bits_.words.size() * sizeof(std::uint64_t);
         stats_.bytes = stats_.table_bytes + stats_.bits_bytes;
+        stats_.peak_bytes = hashed_build_bytes(stats_.objects, stats_.references, stats_.occupied, stats_.cells, t.M);
+        stats_.dense_bytes = dense;
         stats_.build_seconds = timer.seconds();
     }
 
     // The grid's shape and each object's cells, lambda cells per object up to
     // max_hashed_cells_per_axis: chapter 07's plan, whose references are counted before anything is
     // allocated, and which lowers lambda where such a grid would not pay (grid_pays).
-    static GridPlan plan_shape(const Objects& objects, float lambda)
+    static GridPlan plan_shape(const Objects& objects, const Bounds& scene, float lambda)
     {
         const int count = objects.size();
-        const Bounds scene = bounds_of_all(objects);
         const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
         if (static_cast<long long>(asked.x) * asked.y * asked.z >= (1LL << 31))
             throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
@@ -185,10 +247,119 @@ private:
         return plan_over_all(objects, scene, lambda, max_hashed_cells_per_axis, "the hashed grid");
     }
 
+    // The table's size: the one asked for, or, for 0, the least prime at least twice the occupied cells.
+    static std::uint32_t table_size_for(std::uint32_t table_size, long long occupied)
+    {
+        return table_size > 0 ? table_size : prime_at_least(2 * static_cast<std::uint64_t>(std::max(1LL, occupied)));
+    }
+
+    // A lambda the notice offers instead, and what its build would hold (0: none found).
+    struct Coarser {
+        float lambda = 0.0f;
+        std::size_t peak = 0;
+    };
+
+    // What the build will hold at its peak (hashed_build_bytes), weighed against chapter 07's dense
+    // grid at dense_grid_lambda over the same objects (its plan: a pass over the objects; nothing is
+    // built). Past hashed_memory_factor times that, and past hashed_memory_floor, it says so
+    // (say_memory_weighed), with the largest power-of-two fractions of the lambda asked for whose
+    // plans stay under the floor and within the factor (a pass over the objects and their cells for
+    // each). The build goes on at the lambda asked for: memory is the user's to trade for speed
+    // (finer cells test fewer objects), and nothing is answered wrong. Returns the dense grid's bytes.
+    static std::size_t weigh_memory(const Objects& objects, const Bounds& scene, const GridPlan& plan,
+                                    long long occupied, float asked, std::uint32_t table_size)
+    {
+        const int count = objects.size();
+        const auto peak_of = [&](const GridPlan& p, long long occ) {
+            return hashed_build_bytes(count, p.references, occ,
+                                      static_cast<long long>(p.shape.n.x) * p.shape.n.y * p.shape.n.z,
+                                      table_size_for(table_size, occ));
+        };
+        const std::size_t peak = peak_of(plan, occupied);
+        const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
+        std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
+        std::iota(all.begin(), all.end(), 0u);
+        const GridPlan dense_plan = plan_grid(scene, objects, all, dense_grid_lambda, margin, max_cells_per_axis);
+        const std::size_t dense = dense_build_bytes(count, dense_plan.references, dense_plan.shape.cell_count());
+        const double within = hashed_memory_factor * static_cast<double>(dense);
+        const double budget = std::max(hashed_memory_floor, within);
+        if (static_cast<double>(peak) <= budget)
+            return dense;
+
+        // The coarser plans, halving lambda each time, until one holds no more than `within`, or the
+        // grid is one cell.
+        Coarser under_budget, under_within;
+        float l = plan.lambda;
+        for (int halvings = 0; halvings < 40 && under_within.lambda == 0.0f; ++halvings) {
+            l *= 0.5f;
+            const GridPlan coarser = plan_grid(scene, objects, all, l, margin, max_hashed_cells_per_axis);
+            OccupancyBits bits;
+            const std::size_t p = peak_of(coarser, set_bits(coarser.shape, coarser.ranges, bits));
+            if (under_budget.lambda == 0.0f && static_cast<double>(p) <= budget)
+                under_budget = {l, p};
+            if (static_cast<double>(p) <= within)
+                under_within = {l, p};
+            if (coarser.shape.n == cell3(1))
+                break;
+        }
+        say_memory_weighed(plan, occupied, count, peak, dense, asked, table_size, under_budget, under_within);
+        return dense;
+    }
+
+    // The notice (common/notice.hpp) of a build that holds many times the dense grid's memory: both
+    // figures, the references per object and the scene's part in it, and the lambdas that would not.
+    static void say_memory_weighed(const GridPlan& plan, long long occupied, int objects, std::size_t peak,
+                                   std::size_t dense, float asked, std::uint32_t table_size,
+                                   const Coarser& under_budget, const Coarser& under_within)
+    {
+        const auto number = [](double x, const char* format) {
+            char s[64];
+            std::snprintf(s, sizeof s, format, x);
+            return std::string(s);
+        };
+        const auto MB = [&](double bytes) { return number(bytes / 1e6, bytes < 1e9 ? "%.3g MB" : "%.0f MB"); };
+        const auto lambda = [&](float l) { return number(static_cast<double>(l), "%g"); };
+        const cell3 n = plan.shape.n;
+        const double cells = static_cast<double>(n.x) * n.y * n.z;
+        const bool flat = (n.x == 1) + (n.y == 1) + (n.z == 1) == 1;
+        const std::string filled = number(100.0 * static_cast<double>(occupied) / cells, "%.0f%%");
+
+        std::string line = "the hashed grid: at lambda " + lambda(plan.lambda) + " (" + std::to_string(n.x) + " x " +
+                           std::to_string(n.y) + " x " + std::to_string(n.z) + " cells) its build holds up to " +
+                           MB(static_cast<double>(peak)) + ", " +
+                           number(static_cast<double>(peak) / std::max(1.0, static_cast<double>(dense)), "%.0f") +
+                           " times the " + MB(static_cast<double>(dense)) + " of chapter 07's dense grid at lambda " +
+                           lambda(dense_grid_lambda) + ": its " + std::to_string(objects) + " objects are listed in " +
+                           number(static_cast<double>(plan.references) / std::max(1, objects), "%.0f") +
+                           " cells each on average (an object much larger than a cell is listed in every cell it "
+                           "overlaps), " +
+                           (flat ? "and the scene is flat: they fill " + filled + " of the cells of its one layer"
+                                 : "filling " + filled + " of the grid's cells");
+        if (table_size > 0)  // the buckets' offsets and the filing's cursors
+            line += ", and the " + std::to_string(table_size) + " buckets asked for (--table-size) take " +
+                    MB((2.0 * table_size + 1) * sizeof(std::uint32_t)) + " of it";
+        // "--lambda A would hold X MB, under 64 MB, and --lambda B Y MB, within 8 times", or either alone.
+        const bool both = under_budget.lambda > 0.0f && under_budget.lambda != under_within.lambda;
+        if (both)
+            line += "; --lambda " + lambda(under_budget.lambda) + " would hold " +
+                    MB(static_cast<double>(under_budget.peak)) + ", under " + MB(hashed_memory_floor) +
+                    (under_within.lambda > 0.0f ? ", and " : "; ");
+        else
+            line += "; ";
+        if (under_within.lambda > 0.0f)
+            line += "--lambda " + lambda(under_within.lambda) + (both ? " " : " would hold ") +
+                    MB(static_cast<double>(under_within.peak)) + ", within " + lambda(hashed_memory_factor) + " times";
+        else
+            line += "no lower lambda holds less than " + lambda(hashed_memory_factor) + " times as much";
+        line += "; built at lambda " + lambda(plan.lambda) + (plan.lambda == asked ? " as asked" : "");
+        notice(line);
+    }
+
     // Every (cell, object) reference as one 64-bit key, cell above object, sorted; then one
     // HashedCell per occupied cell, in increasing address, its objects (table_.object_index) in
     // increasing number.
-    std::vector<HashedCell> sort_references(const std::vector<CellRange>& ranges, long long references)
+    std::vector<HashedCell> sort_references(const std::vector<CellRange>& ranges, long long references,
+                                            long long occupied)
     {
         const long long cells = static_cast<long long>(shape_.n.x) * shape_.n.y * shape_.n.z;
         std::vector<std::uint64_t> keys;
@@ -204,6 +375,7 @@ private:
         std::sort(keys.begin(), keys.end());
 
         std::vector<HashedCell> by_address;
+        by_address.reserve(static_cast<std::size_t>(occupied));
         table_.object_index.resize(keys.size());
         for (std::size_t i = 0; i < keys.size(); ++i) {
             const auto p = static_cast<std::int32_t>(keys[i] >> 32);
@@ -216,12 +388,12 @@ private:
     }
 
     // The cells filed by bucket, cell p in bucket p mod M (a counting sort, stable: by increasing
-    // address within a bucket), M = table_size or, for 0, the least prime at least twice the
-    // occupied cells. Returns the collisions: cells filed in a bucket that already held one.
-    long long file_by_bucket(const std::vector<HashedCell>& by_address, std::uint32_t table_size)
+    // address within a bucket; M from table_size_for). Returns the collisions: cells filed in a
+    // bucket that already held one.
+    long long file_by_bucket(const std::vector<HashedCell>& by_address, std::uint32_t M)
     {
         HashTable& t = table_;
-        t.M = table_size > 0 ? table_size : prime_at_least(2 * std::max<std::uint64_t>(1, by_address.size()));
+        t.M = M;
         t.bucket_start.assign(static_cast<std::size_t>(t.M) + 1, 0);
         for (const HashedCell& c : by_address)
             ++t.bucket_start[static_cast<std::uint32_t>(c.p) % t.M + 1];
@@ -237,15 +409,26 @@ private:
         return collisions;
     }
 
-    // One bit per cell of the grid, set for the occupied ones.
-    void set_bits(const std::vector<HashedCell>& by_address)
+    // One bit per cell of `shape`, set for the cells each object's range reaches (the occupied ones:
+    // the same cells sort_references lists). Returns how many are set.
+    static long long set_bits(const GridShape& shape, const std::vector<CellRange>& ranges, OccupancyBits& bits)
     {
-        const long long cells = static_cast<long long>(shape_.n.x) * shape_.n.y * shape_.n.z;
-        bits_.words.assign(static_cast<std::size_t>((cells + 63) / 64), 0);
-        for (const HashedCell& c : by_address) {
-            const auto p = static_cast<std::uint32_t>(c.p);
-            bits_.words[p >> 6] |= std::uint64_t{1} << (p & 63u);
-        }
+        const long long cells = static_cast<long long>(shape.n.x) * shape.n.y * shape.n.z;
+        bits.words.assign(static_cast<std::size_t>((cells + 63) / 64), 0);
+        long long occupied = 0;
+        for (const CellRange& r : ranges)
+            for (int i = r.first.x; i <= r.last.x; ++i)
+                for (int j = r.first.y; j <= r.last.y; ++j)
+                    for (int l = r.first.z; l <= r.last.z; ++l) {
+                        const int p = shape.address({i, j, l});
+                        if (p < 0 || p >= cells)  // a student's 07.3 may step outside the grid
+                            continue;
+                        std::uint64_t& word = bits.words[static_cast<std::uint32_t>(p) >> 6];
+                        const std::uint64_t bit = std::uint64_t{1} << (static_cast<std::uint32_t>(p) & 63u);
+                        occupied += (word & bit) == 0;
+                        word |= bit;
+                    }
+        return occupied;
     }
 
     GridShape shape_;

@@ -1,12 +1,14 @@
 // Legal scenes that once broke a structure: objects all at one point, each around all the others,
 // scenes flat in a plane through the origin, tiny and single-object scenes. Every structure of
 // chapters 07-10 must build them within its budgets and answer every seeded ray as brute force does
-// (object and t), without testing many times more objects than brute force.
+// (object and t), without testing many times more objects than brute force; the hashed grid must
+// say when its build holds many times the dense grid's memory (memory_weighed.hpp).
 #include "08_mailboxing/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "10_hierarchies/figure.hpp"
 #include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/structures/memory_weighed.hpp"
 
 #include <functional>
 #include <string>
@@ -46,6 +48,22 @@ constexpr std::size_t max_bytes = std::size_t{1} << 30;
 // and below grid_pays_floor tests a ray (chapter 07's grid.hpp) a few objects cost nothing either way.
 constexpr double max_tests_over_brute = 3.0;
 
+// The structure `s` built over `objects`; the hashed grid's word on its memory checked
+// (memory_weighed.hpp) from the notices said while it was built.
+std::unique_ptr<Accelerator> built_saying(const Structure& s, const Objects& objects, float lambda)
+{
+    std::unique_ptr<Accelerator> built;
+    std::vector<std::string> said;
+    {
+        const NoticeCapture capture;
+        built = s.build(objects, lambda);
+        said = capture.lines();
+    }
+    if (const auto* hashed = dynamic_cast<const HashedGrid*>(built.get()))
+        memory_weighed::check(objects, *hashed, said);
+    return built;
+}
+
 struct Work {
     std::uint64_t tests = 0;
 };
@@ -73,7 +91,7 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
         CHECK(d.wrong == 0);
         INFO("tests: brute force " << brute_tests << ", the structure " << structure_tests);
         CHECK(structure_tests <= max_tests_over_brute * brute_tests + grid_pays_floor * d.rays);
-        const std::unique_ptr<Accelerator> built = s.build(objects, s.lambda);
+        const std::unique_ptr<Accelerator> built = built_saying(s, objects, s.lambda);
         INFO("bytes: " << built->bytes());
         CHECK(built->bytes() <= max_bytes);
     }
@@ -103,7 +121,7 @@ void check_ray(const LitScene& scene, const Ray& ray, float lambda)
         ObjectHit want;
         const bool want_found = brute_force().closest(ray, range, objects, want);
         for (const Structure& s : structures()) {
-            const std::unique_ptr<Accelerator> built = s.build(objects, lambda);
+            const std::unique_ptr<Accelerator> built = built_saying(s, objects, lambda);
             ObjectHit got;
             const bool got_found = built->closest(ray, range, objects, got);
             INFO("the " << s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
