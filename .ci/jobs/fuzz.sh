@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # CI job: every libFuzzer target (tests/fuzz/README.md) builds with clang, and each runs briefly over
-# its corpus (RT_FUZZ_SECONDS each, 20 by default): a finding fails the job and leaves its input
+# its corpus (RT_FUZZ_SECONDS each, 12 by default): a finding fails the job and leaves its input
 # under build/ci-fuzz/artifacts/.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 work=build/ci-fuzz
-seconds=${RT_FUZZ_SECONDS:-20}
+seconds=${RT_FUZZ_SECONDS:-12}
 cmake -S . -B "$work/build" -G Ninja -DRT_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Release >/dev/null
 # Every target tests/fuzz/CMakeLists.txt adds, by name.
 targets=$(sed -n 's/^ *rt_add_\(solutions_\)\{0,1\}fuzz_target(\([a-z_][a-z_]*\).*/\2/p' tests/fuzz/CMakeLists.txt | sort -u)
