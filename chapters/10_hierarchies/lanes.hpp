@@ -77,6 +77,9 @@ inline Mask4 operator|(Mask4 a, Mask4 b) { return {_mm_or_ps(a.v, b.v)}; }
 inline Mask4 operator~(Mask4 a) { return {_mm_xor_ps(a.v, _mm_castsi128_ps(_mm_set1_epi32(-1)))}; }
 // The lanes that are true, as bits: bit i for lane i.
 inline unsigned bits(Mask4 m) { return static_cast<unsigned>(_mm_movemask_ps(m.v)); }
+// a > b ? a : b and a < b ? a : b, lane by lane: b where either is NaN (SSE's maxps and minps).
+inline Float4 greater_or_second(Float4 a, Float4 b) { return Float4(_mm_max_ps(a.v, b.v)); }
+inline Float4 less_or_second(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
 #else
 namespace lanes_detail {
 template <class F>
@@ -105,6 +108,8 @@ inline Mask4 operator&(Mask4 a, Mask4 b) { return {a.v & b.v}; }
 inline Mask4 operator|(Mask4 a, Mask4 b) { return {a.v | b.v}; }
 inline Mask4 operator~(Mask4 a) { return {~a.v & 0xfu}; }
 inline unsigned bits(Mask4 m) { return m.v; }
+inline Float4 greater_or_second(Float4 a, Float4 b) { return lanes_detail::each(a, b, [](float x, float y) { return x > y ? x : y; }); }
+inline Float4 less_or_second(Float4 a, Float4 b) { return lanes_detail::each(a, b, [](float x, float y) { return x < y ? x : y; }); }
 #endif
 
 }  // namespace lanes_sse or lanes_plain

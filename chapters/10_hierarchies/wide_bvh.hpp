@@ -83,51 +83,246 @@ inline void prefetch(const void* p, std::size_t bytes)
 // The slab test of common/bounds.hpp on the node's four boxes at once: the same formula, the
 // same order of operations, so each box is entered exactly when slab_interval would enter it.
 // Returns the mask of the boxes entered (bit i: child i), with each one's entry t in t0_out[i].
-// SSE's max and min return their second operand when either is NaN, as the scalar test's
-// `t_near > t0 ? t_near : t0` keeps t0: a NaN slab (an origin on a face, d_i = 0) leaves the
-// interval alone.
+// greater_or_second and less_or_second keep t0 and t1, as the scalar test's
+// `t_near > t0 ? t_near : t0` does, when a slab is NaN (an origin on a face, d_i = 0).
 inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interval reach, float t0_out[4])
 {
-#if RT_WIDE_SSE
-    __m128 t0 = _mm_set1_ps(reach.min), t1 = _mm_set1_ps(reach.max);
-    const __m128 widening = _mm_set1_ps(slab_far_widening);
+    Float4 t0 = reach.min, t1 = reach.max;
     for (int a = 0; a < 3; ++a) {
-        const __m128 near_plane = _mm_loadu_ps(slabs.down[a] ? node.max[a] : node.min[a]);
-        const __m128 far_plane = _mm_loadu_ps(slabs.down[a] ? node.min[a] : node.max[a]);
-        const __m128 o = _mm_set1_ps(slabs.origin[a]), inv = _mm_set1_ps(slabs.inv_dir[a]);
-        const __m128 t_near = _mm_mul_ps(_mm_sub_ps(near_plane, o), inv);
-        const __m128 t_far = _mm_mul_ps(_mm_mul_ps(_mm_sub_ps(far_plane, o), inv), widening);
-        t0 = _mm_max_ps(t_near, t0);
-        t1 = _mm_min_ps(t_far, t1);
+        const Float4 near_plane = Float4::load(slabs.down[a] ? node.max[a] : node.min[a]);
+        const Float4 far_plane = Float4::load(slabs.down[a] ? node.min[a] : node.max[a]);
+        const Float4 o = slabs.origin[a], inv = slabs.inv_dir[a];
+        const Float4 t_near = (near_plane - o) * inv;
+        const Float4 t_far = (far_plane - o) * inv * Float4(slab_far_widening);
+        t0 = greater_or_second(t_near, t0);
+        t1 = less_or_second(t_far, t1);
     }
-    _mm_storeu_ps(t0_out, t0);
+    t0.store(t0_out);
     // Entered unless t0 > t1, as slab_interval says it.
-    return ~static_cast<unsigned>(_mm_movemask_ps(_mm_cmpgt_ps(t0, t1))) & 0xfu;
-#else
-    float t0[4], t1[4];
-    for (int i = 0; i < 4; ++i) {
-        t0[i] = reach.min;
-        t1[i] = reach.max;
+    return ~bits(t0 > t1) & 0xfu;
+}
+
+// Which answer a query wants: the nearest hit (a camera ray's), or whether anything is hit at all
+// (a shadow feeler's: the first hit found ends it).
+enum class QueryKind { closest, any };
+
+// One query's walk down the wide tree: the state it carries (the ray, the reach that could still
+// beat the best hit, the best so far, the stack of children to visit) and its three steps, a node
+// (open), a leaf asked one by one (leaf) and a block of four triangles (block). A step returns true
+// when a hit ends the query, which only an any-hit query's first hit does.
+template <QueryKind kind>
+class WideQuery {
+public:
+    WideQuery(const WideBvh& tree, const Ray& ray, Interval range, const Objects& objects)
+        : tree_(tree), ray_(ray), range_(range), objects_(objects), slabs_(ray), reach_(range),
+          bounded_(objects.tests.triangle == TriangleTest::watertight_bounded),
+          // Four triangles at once where the query asks for the watertight test (chapter 04 on); the
+          // other tests go one by one through the object list.
+          four_wide_(bounded_ || objects.tests.triangle == TriangleTest::watertight),
+          frame_(four_wide_ ? ray_frame(ray) : RayFrame{})
+    {
     }
-    for (int a = 0; a < 3; ++a) {
-        const float* near_plane = slabs.down[a] ? node.max[a] : node.min[a];
-        const float* far_plane = slabs.down[a] ? node.min[a] : node.max[a];
-        const float o = slabs.origin[a], inv = slabs.inv_dir[a];
-        for (int i = 0; i < 4; ++i) {
-            const float t_near = (near_plane[i] - o) * inv;
-            const float t_far = (far_plane[i] - o) * inv * slab_far_widening;
-            t0[i] = t_near > t0[i] ? t_near : t0[i];
-            t1[i] = t_far < t1[i] ? t_far : t1[i];
+
+    // Walks the tree from the root, nearest child first; the best hit goes to `hit`.
+    bool run(ObjectHit& hit)
+    {
+        Entry e{0, 0, 0, range_.min};  // the root: a wide node (count 0), number 0
+        for (;;) {
+            if (e.in_blocks) {
+                const FourTriangles* g = &tree_.blocks[e.first];
+                for (std::uint32_t j = 0; j < e.count; j += 4, ++g)
+                    if (block(*g, std::min<std::uint32_t>(4, e.count - j)))
+                        return answer(hit);
+            } else if (e.count > 0) {
+                if (leaf(&tree_.object_index[e.first], e.count))
+                    return answer(hit);
+            } else if (open(tree_.nodes[e.first], e)) {
+                continue;
+            }
+            if (!next(e)) {
+                if (found_)
+                    hit = best_;
+                return found_;
+            }
         }
     }
-    unsigned entered = 0;
-    for (int i = 0; i < 4; ++i) {
-        t0_out[i] = t0[i];
-        entered |= (t0[i] > t1[i] ? 0u : 1u) << i;
+
+private:
+    struct Entry {
+        std::uint32_t first;
+        std::uint16_t count;
+        std::uint16_t in_blocks;  // a leaf of triangles: first is its first block
+        float t;                  // where the ray enters the child's box
+    };
+
+    bool answer(ObjectHit& hit) const
+    {
+        hit = best_;
+        return true;
     }
-    return entered;
-#endif
-}
+
+    // A hit becomes the best so far; true when it answers the query.
+    bool keep(const ObjectHit& h)
+    {
+        best_ = h;
+        found_ = true;
+        reach_.max = std::nextafter(best_.t, infinity);
+        return kind == QueryKind::any;
+    }
+
+    // Object k asked as 10.4's loop asks it, in the range that beats the best so far.
+    bool ask(int k)
+    {
+        ObjectHit h;
+        return objects_.intersect(k, ray_, closer_than(range_, best_, k), h) && keep(h);
+    }
+
+    // A leaf of other kinds: its objects one by one, in order, through the object list.
+    bool leaf(const std::uint32_t* object, std::uint32_t n)
+    {
+        for (std::uint32_t j = 0; j < n; ++j)
+            if (ask(static_cast<int>(object[j])))
+                return true;
+        return false;
+    }
+
+    // A node: its children that the ray enters within reach. The nearest becomes `e`, the others are
+    // pushed far to near; false when the ray enters none.
+    bool open(const WideNode& node, Entry& e)
+    {
+        count(Counter::nodes_visited);
+        float t0[4];
+        const unsigned entered = enter_boxes(node, slabs_, reach_, t0) & node.occupied;
+        if (entered == 0)
+            return false;
+        if ((entered & (entered - 1)) == 0) {
+            // One child entered (the commonest case): straight into it, nothing pushed.
+            const int i = entered == 1u ? 0 : entered == 2u ? 1 : entered == 4u ? 2 : 3;
+            e = {node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
+            return true;
+        }
+        const int base = top_;
+        for (int i = 0; i < 4; ++i) {
+            if (!(entered >> i & 1u))
+                continue;
+            // Asked for now, to arrive while the nearer children are walked.
+            if (node.in_blocks >> i & 1u)
+                prefetch(&tree_.blocks[node.first[i]], sizeof(FourTriangles));
+            else if (node.count[i] == 0)
+                prefetch(&tree_.nodes[node.first[i]], sizeof(WideNode));
+            const Entry c{node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
+            int j = top_++;
+            for (; j > base && stack_[j - 1].t < c.t; --j)
+                stack_[j] = stack_[j - 1];
+            stack_[j] = c;
+        }
+        e = stack_[--top_];
+        return true;
+    }
+
+    // The next child on the stack, passing over those that lie beyond a hit found since they were
+    // pushed; false when none is left.
+    bool next(Entry& e)
+    {
+        do {
+            if (top_ == 0)
+                return false;
+            e = stack_[--top_];
+        } while (e.t > reach_.max);
+        return true;
+    }
+
+    // What the one-by-one loop asks an object, for a lane the block's test hit: the bound on t
+    // (bounded_answer, before the range, as hit_triangle_bounded applies it), the tie rule, its
+    // front; true when the hit is kept.
+    bool lane_kept(const FourTriangles& g, const FourHits& h, int i)
+    {
+        const int k = g.object[i];
+        const Triangle tri = g.triangle(i);
+        TriangleHit<float> answer{h.t[i], h.V[i] / h.det[i], h.W[i] / h.det[i]};
+        if (bounded_ && !bounded_answer(ray_, tri, answer, answer))
+            return false;
+        if (!closer_than(range_, best_, k).surrounds(answer.t))
+            return false;
+        if (objects_.one_sided && (*objects_.one_sided)[objects_.ref(k).index] && glm::dot(face_normal(tri), ray_.dir) > 0.0f)
+            return false;  // its back
+        keep(ObjectHit{answer.t, k, answer.beta, answer.gamma});
+        return true;
+    }
+
+    // A block of a leaf of triangles, its first n lanes: four at a time (10.6) where the query asks
+    // for the watertight test, else (or with 10.6's stub) one by one.
+    bool block(const FourTriangles& g, std::uint32_t n)
+    {
+        // Bounded, every lane hit beyond range.min: a lane's answer may come nearer than its float t.
+        const FourHits h = four_wide_ ? hit_four_triangles(g, frame_, Interval{range_.min, bounded_ ? infinity : reach_.max})
+                                      : FourHits::not_tested();
+        if (!h.tested) {
+            for (std::uint32_t i = 0; i < n; ++i)
+                if (ask(g.object[i]))
+                    return true;
+            return false;
+        }
+        if (kind == QueryKind::any)
+            return first_lane_kept(g, h, n);
+        count(Counter::intersection_tests, n);
+        nearest_lane_kept(g, h, h.hit & ((1u << n) - 1u));
+        return false;
+    }
+
+    // An any-hit query's block: the lanes in the leaf's order, counted as the one-by-one loop counts
+    // them (the tests up to the hit); true at the first lane kept.
+    bool first_lane_kept(const FourTriangles& g, const FourHits& h, std::uint32_t n)
+    {
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (h.hit >> i & 1u && lane_kept(g, h, static_cast<int>(i))) {
+                count(Counter::intersection_tests, i + 1);
+                return true;
+            }
+        count(Counter::intersection_tests, n);
+        return false;
+    }
+
+    // A closest-hit query's block, the lanes hit in `left`.
+    void nearest_lane_kept(const FourTriangles& g, const FourHits& h, unsigned left)
+    {
+        if (bounded_) {
+            // Every lane asked, as the one-by-one loop asks them (closer_than keeps the nearest
+            // whatever the order): a lane whose float t is within the bound is answered by double,
+            // nearer or farther than the float t says, so no float order can end the block early.
+            for (int i = 0; left != 0; ++i, left >>= 1)
+                if (left & 1u)
+                    lane_kept(g, h, i);
+            return;
+        }
+        // Nearest first, by t and then object number (closer_than's order): the first lane kept is
+        // the block's answer (every lane after it would fail closer_than). A lane that fails is
+        // passed over, not taken to end the block: a 10.6 that breaks its contract (a hit in an
+        // empty lane, a NaN t, t at the range's start) costs its own lanes, not the others'.
+        while (left != 0) {
+            int i = -1;
+            for (int l = 0; l < 4; ++l)
+                if (left >> l & 1u && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
+                    i = l;
+            if (lane_kept(g, h, i))
+                return;
+            left &= ~(1u << i);
+        }
+    }
+
+    const WideBvh& tree_;
+    const Ray& ray_;
+    const Interval range_;
+    const Objects& objects_;
+    const RaySlabs slabs_;
+    Interval reach_;  // the range that could still beat the best hit
+    ObjectHit best_;
+    bool found_ = false;
+    const bool bounded_, four_wide_;
+    const RayFrame frame_;
+    Entry stack_[wide_stack_size];
+    int top_ = 0;
+};
 
 class WideBvhAccel final : public Accelerator {
 public:
@@ -151,12 +346,12 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        return query(ray, range, objects, false, hit);
+        return ready(ray) && WideQuery<QueryKind::closest>(tree_, ray, range, objects).run(hit);
     }
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
         ObjectHit hit;
-        return query(ray, range, objects, true, hit);
+        return ready(ray) && WideQuery<QueryKind::any>(tree_, ray, range, objects).run(hit);
     }
     std::size_t bytes() const override { return bytes_; }
     void report(std::ostream& out) const override
@@ -253,169 +448,8 @@ private:
         return self;
     }
 
-    bool query(const Ray& ray, Interval range, const Objects& objects, bool any_hit, ObjectHit& hit) const
-    {
-        if (tree_.nodes.empty() || !valid_ray(ray))
-            return false;
-        const RaySlabs slabs(ray);
-        // Four triangles at once where the query asks for the watertight test (chapter 04 on);
-        // the other tests go one by one through the object list.
-        const bool bounded = objects.tests.triangle == TriangleTest::watertight_bounded;
-        const bool four_wide = bounded || objects.tests.triangle == TriangleTest::watertight;
-        const RayFrame frame = four_wide ? ray_frame(ray) : RayFrame{};
-        Interval reach = range;
-        ObjectHit best;
-        bool found = false;
-        // A hit becomes the best so far; true when it answers an any-hit query.
-        const auto keep = [&](const ObjectHit& h) {
-            best = h;
-            found = true;
-            reach.max = std::nextafter(best.t, infinity);
-            return any_hit;
-        };
-        // Objects asked one by one, in order, through the object list, as 10.4's loop asks them.
-        const auto ask = [&](int k) {
-            ObjectHit h;
-            return objects.intersect(k, ray, closer_than(range, best, k), h) && keep(h);
-        };
-        const auto one_by_one = [&](const std::uint32_t* object, std::uint32_t n) {
-            for (std::uint32_t j = 0; j < n; ++j)
-                if (ask(static_cast<int>(object[j])))
-                    return true;
-            return false;
-        };
-        // What the one-by-one loop asks an object, for a lane the block's test hit: the bound on t
-        // (bounded_answer, before the range, as hit_triangle_bounded applies it), the tie rule, its
-        // front; true when the hit is kept.
-        const auto lane_kept = [&](const FourTriangles& g, const FourHits& h, int i) {
-            const int k = g.object[i];
-            const Triangle tri = g.triangle(i);
-            TriangleHit<float> answer{h.t[i], h.V[i] / h.det[i], h.W[i] / h.det[i]};
-            if (bounded && !bounded_answer(ray, tri, answer, answer))
-                return false;
-            if (!closer_than(range, best, k).surrounds(answer.t))
-                return false;
-            if (objects.one_sided && (*objects.one_sided)[objects.ref(k).index] && glm::dot(face_normal(tri), ray.dir) > 0.0f)
-                return false;  // its back
-            keep(ObjectHit{answer.t, k, answer.beta, answer.gamma});
-            return true;
-        };
-        // A block of a leaf of triangles: four at a time (10.6) where the query asks for the
-        // watertight test, else (or with 10.6's stub) one by one; true when a hit answers an any-hit
-        // query.
-        const auto block = [&](const FourTriangles& g, std::uint32_t n) {
-            // Bounded, every lane hit beyond range.min: a lane's answer may come nearer than its float t.
-            const FourHits h = four_wide ? hit_four_triangles(g, frame, Interval{range.min, bounded ? infinity : reach.max})
-                                         : FourHits::not_tested();
-            if (!h.tested) {
-                for (std::uint32_t i = 0; i < n; ++i)
-                    if (ask(g.object[i]))
-                        return true;
-                return false;
-            }
-            if (any_hit) {
-                // In the leaf's order, counted as the one-by-one loop counts: the tests up to the hit.
-                for (std::uint32_t i = 0; i < n; ++i)
-                    if (h.hit >> i & 1u && lane_kept(g, h, static_cast<int>(i))) {
-                        count(Counter::intersection_tests, i + 1);
-                        return true;
-                    }
-                count(Counter::intersection_tests, n);
-                return false;
-            }
-            count(Counter::intersection_tests, n);
-            unsigned left = h.hit & ((1u << n) - 1u);
-            if (bounded) {
-                // Every lane asked, as the one-by-one loop asks them (closer_than keeps the nearest
-                // whatever the order): a lane whose float t is within the bound is answered by
-                // double, nearer or farther than the float t says, so no float order can end the
-                // block early.
-                for (int i = 0; left != 0; ++i, left >>= 1)
-                    if (left & 1u)
-                        lane_kept(g, h, i);
-                return false;
-            }
-            // Nearest first, by t and then object number (closer_than's order): the first lane kept
-            // is the block's answer (every lane after it would fail closer_than). Only the block's n
-            // lanes, and a lane that fails is passed over, not taken to end the block: a 10.6 that
-            // breaks its contract (a hit in an empty lane, a NaN t, t at the range's start) costs its
-            // own lanes, not the others'.
-            while (left != 0) {
-                int i = -1;
-                for (int l = 0; l < 4; ++l)
-                    if (left >> l & 1u && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
-                        i = l;
-                if (lane_kept(g, h, i))
-                    break;
-                left &= ~(1u << i);
-            }
-            return false;
-        };
-        struct Entry {
-            std::uint32_t first;
-            std::uint16_t count;
-            std::uint16_t in_blocks;  // a leaf of triangles: first is its first block
-            float t;                  // where the ray enters the child's box
-        };
-        Entry stack[wide_stack_size];
-        int top = 0;
-        Entry e{0, 0, 0, range.min};  // the root: a wide node (count 0), number 0
-        const auto answer = [&] {
-            hit = best;
-            return true;
-        };
-        for (;;) {
-            if (e.in_blocks) {
-                const FourTriangles* g = &tree_.blocks[e.first];
-                for (std::uint32_t j = 0; j < e.count; j += 4, ++g)
-                    if (block(*g, std::min<std::uint32_t>(4, e.count - j)))
-                        return answer();
-            } else if (e.count > 0) {
-                if (one_by_one(&tree_.object_index[e.first], e.count))
-                    return answer();
-            } else {
-                const WideNode& node = tree_.nodes[e.first];
-                count(Counter::nodes_visited);
-                float t0[4];
-                const unsigned entered = enter_boxes(node, slabs, reach, t0) & node.occupied;
-                if (entered != 0 && (entered & (entered - 1)) == 0) {
-                    // One child entered (the commonest case): straight into it, nothing pushed.
-                    const int i = entered == 1u ? 0 : entered == 2u ? 1 : entered == 4u ? 2 : 3;
-                    e = {node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
-                    continue;
-                }
-                if (entered != 0) {
-                    // The children entered, pushed far to near; the nearest is taken at once.
-                    const int base = top;
-                    for (int i = 0; i < 4; ++i) {
-                        if (!(entered >> i & 1u))
-                            continue;
-                        if (node.in_blocks >> i & 1u)
-                            prefetch(&tree_.blocks[node.first[i]], sizeof(FourTriangles));
-                        else if (node.count[i] == 0)
-                            prefetch(&tree_.nodes[node.first[i]], sizeof(WideNode));
-                        const Entry c{node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
-                        int j = top++;
-                        for (; j > base && stack[j - 1].t < c.t; --j)
-                            stack[j] = stack[j - 1];
-                        stack[j] = c;
-                    }
-                    e = stack[--top];
-                    continue;
-                }
-            }
-            // The next child on the stack, passing over those that lie beyond a hit found since
-            // they were pushed.
-            do {
-                if (top == 0) {
-                    if (found)
-                        hit = best;
-                    return found;
-                }
-                e = stack[--top];
-            } while (e.t > reach.max);
-        }
-    }
+    // A tree with something in it, and a ray the slab test can take (common/bounds.hpp).
+    bool ready(const Ray& ray) const { return !tree_.nodes.empty() && valid_ray(ray); }
 
     WideBvh tree_;
     std::size_t bytes_ = 0;
