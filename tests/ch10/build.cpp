@@ -187,3 +187,34 @@ GRADED_TEST("make_leaf: at most leaf_size objects, at the depth limit, or when n
         CHECK(got == c.leaf_expected);
     }
 }
+
+GRADED_TEST("best_split: a single bin holding objects, first, last or between, among 2 to 16 bins, gives no split; the first and last bins holding objects give one",
+            "10.2", 1)
+{
+    // Every plane has that bin's side holding all the objects and the other side none: no plane is
+    // a split. With the bin last, the planes' loop must stop at the plane before it, after bin
+    // bins.size() - 2; there is no plane after the last bin. With the first and the last bins
+    // holding 7 objects each, every plane has both (half areas 3 and 3 in a parent of 2n + 1):
+    // all cost the same, and the first, after bin 0, wins.
+    for (int n = 2; n <= 16; ++n) {
+        std::vector<int> ends(static_cast<size_t>(n), 0);
+        ends.front() = ends.back() = 7;
+        check_best_split(box({0, 0, 0}, {static_cast<float>(n), 1, 1}), ends, 0,
+                         0.125f + 42.0f / static_cast<float>(2 * n + 1),
+                         "the first and last bins hold objects: every plane has objects on both sides, at one cost");
+    }
+    for (int n = 2; n <= 16; ++n)
+        for (const int full : {0, n / 2, n - 1}) {
+            std::vector<int> counts(static_cast<size_t>(n), 0);
+            counts[static_cast<size_t>(full)] = 7;
+            const std::vector<SahBin> bins = unit_bins(counts);
+            const Bounds parent = box({0, 0, 0}, {static_cast<float>(n), 1, 1});
+            const WorkingOn on([&] { return "best_split of " + std::to_string(n) + " bins, only bin " + std::to_string(full) + " holding objects"; });
+            const SahSplit got = best_split(parent, bins);
+            INFO("10.2: " << n << " bins along x, only bin " << full << " holding objects (7): got the plane after bin "
+                 << got.split << " at cost " << got.cost << ", expected no split (-1, infinity): every plane leaves one side "
+                 "without objects");
+            CHECK(got.split == -1);
+            CHECK(std::isinf(got.cost));
+        }
+}

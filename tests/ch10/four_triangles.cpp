@@ -213,3 +213,90 @@ GRADED_TEST("hit_four_triangles: a ray lying in a triangle's own plane (det = 0)
         CHECK(got.hit == 0u);
     }
 }
+
+namespace {
+
+// Lane 0 of a block of one, against 02.5 on the same triangle: hit or miss, t, beta and gamma to
+// the bit. `why` says what the case is about; a failure prints both answers.
+void check_one_lane(const Ray& ray, const Triangle& tri, const std::string& why)
+{
+    Objects objects;
+    objects.triangles = &tri;
+    objects.triangle_count = 1;
+    const std::uint32_t index[1] = {0};
+    const FourTriangles g = four_triangles(objects, index, 1);
+    const Interval range{0.0f, infinity};
+    const std::optional<TriangleHit<float>> want = hit_triangle_watertight(ray, tri, range);
+    const FourHits got = hit_four_triangles(g, ray_frame(ray), range);
+    const bool hit = got.hit & 1u;
+    INFO("10.6: " << show(ray) << ", the triangle (" << nine_digits(tri.a.x) << ", " << nine_digits(tri.a.y) << ", "
+         << nine_digits(tri.a.z) << "), (" << nine_digits(tri.b.x) << ", " << nine_digits(tri.b.y) << ", " << nine_digits(tri.b.z)
+         << "), (" << nine_digits(tri.c.x) << ", " << nine_digits(tri.c.y) << ", " << nine_digits(tri.c.z) << ") in lane 0 ("
+         << lanes << "): the watertight test (02.5) says "
+         << (want ? "t = " + nine_digits(want->t) + ", beta = " + nine_digits(want->beta) + ", gamma = " + nine_digits(want->gamma)
+                  : std::string("missed"))
+         << "; hit_four_triangles "
+         << (!got.tested ? std::string("tested nothing")
+                         : hit ? "t = " + nine_digits(got.t[0]) + ", beta = " + nine_digits(got.V[0] / got.det[0]) +
+                                     ", gamma = " + nine_digits(got.W[0] / got.det[0]) + ", det = " + nine_digits(got.det[0])
+                               : std::string("missed"))
+         << ": " << why);
+    CHECK(got.tested);
+    CHECK(hit == want.has_value());
+    if (hit && want) {
+        CHECK(got.t[0] == want->t);
+        CHECK(got.V[0] / got.det[0] == want->beta);
+        CHECK(got.W[0] / got.det[0] == want->gamma);
+    }
+}
+
+// The triangle with its corners taken in turn: (a, b, c), (b, c, a), (c, a, b). The winding
+// stays; the edge that was b-c (U's) becomes c-a's (V) and then a-b's (W).
+std::vector<Triangle> turns(const Triangle& t) { return {t, {t.b, t.c, t.a}, {t.c, t.a, t.b}}; }
+
+}  // namespace
+
+GRADED_TEST("hit_four_triangles: an edge that float puts through the ray, and double 2^-46 beside it, is decided in double, whichever of the three edges it is",
+            "10.6", 2)
+{
+    // 02.5's example: the edge from (1 + 2^-23, 1 + 2^-22, -4) to (-1, -1 - 2^-23, -5) passes 2^-46
+    // beside the ray from the origin along -z; its edge function is 0 in float and -2^-46 in
+    // double. With the third corner at (2, -2, -4.5) the other two edge functions are positive:
+    // the ray is outside that edge, a miss. With it at (-2, 2, -4.5) they are negative too: a hit.
+    // Each triangle taken three ways round, so that edge is U's, V's and W's in turn.
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    const point3 b{1 + 0x1p-23f, 1 + 0x1p-22f, -4}, c{-1, -1 - 0x1p-23f, -5};
+    for (const point3 a : {point3(2, -2, -4.5f), point3(-2, 2, -4.5f)})
+        for (const Triangle& tri : turns({a, b, c}))
+            check_one_lane(ray, tri, a.x > 0 ? "the ray passes 2^-46 outside the edge through (1, 1, -4) and (-1, -1, -5): "
+                                               "its edge function is 0 in float, and double's -2^-46 decides a miss"
+                                             : "the ray passes 2^-46 inside that edge: double's -2^-46 has the other two's sign, a hit");
+}
+
+GRADED_TEST("hit_four_triangles: an edge function of the least float (1.4e-45) is positive: the ray that far outside a triangle misses it",
+            "10.6", 1)
+{
+    // A triangle of denormal size, corners at multiples of q = 2^-75 in the plane z = -1: (2q, q),
+    // (2q, 0) and (0, q) in x and y. The ray from the origin along -z passes outside its edge from
+    // (2q, 0) to (0, q), by so little that that edge's function is 2q^2 = 2^-149, the least float
+    // above 0, and the other two are -2^-149: their signs differ, a miss (02.5's own answer). All
+    // three are exact in float (products of powers of 2), so no fallback to double changes them.
+    const float q = 0x1p-75f;
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    for (const Triangle& tri : turns({{2 * q, q, -1}, {2 * q, 0, -1}, {0, q, -1}}))
+        check_one_lane(ray, tri, "one edge function is the least positive float, 2^-149 (1.4e-45), the other two -2^-149: "
+                                 "positive and negative, a miss, however small the positive one");
+}
+
+GRADED_TEST("hit_four_triangles: a det of the least float (1.4e-45) is not 0: the ray at a corner of a triangle that small hits it",
+            "10.6", 1)
+{
+    // The triangle (0, 0), (2q, 0), (0, q) in x and y (q = 2^-75), in the plane z = -1, its corner
+    // a on the ray from the origin along -z: U = 2q^2 = 2^-149, V = W = 0, so det = 2^-149, the
+    // least float above 0, and 02.5 hits it at t = 1 (beta = gamma = 0). Only det = 0 is no hit.
+    const float q = 0x1p-75f;
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    for (const Triangle& tri : turns({{0, 0, -1}, {2 * q, 0, -1}, {0, q, -1}}))
+        check_one_lane(ray, tri, "det = U + V + W is 2^-149 (1.4e-45), the least float above 0, not 0: a hit at t = 1, at "
+                                 "the corner on the ray");
+}

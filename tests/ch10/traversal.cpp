@@ -4,6 +4,7 @@
 #include "tests/ch10/closed_sphere.hpp"
 
 #include <filesystem>
+#include <iomanip>
 #include <limits>
 
 using namespace rt;
@@ -248,4 +249,61 @@ GRADED_TEST("bvh_query: the least positive direction along the node's axis is po
     CHECK(found);
     CHECK(hit.object == 0);
     CHECK(tests == 1);
+}
+
+namespace {
+
+// A leaf of its own for each of two triangles, under a root split along x: node 1 (the first
+// child, the near one along +x) holds object 1, node 2 holds object 0; each leaf's box is its
+// triangle's box, and the root's box is around both.
+Bvh own_leaves(const std::vector<Triangle>& tris)
+{
+    const auto box_of = [](const Triangle& t) {
+        Bounds b;
+        b.grow(t.a), b.grow(t.b), b.grow(t.c);
+        return b;
+    };
+    const Bounds near_box = box_of(tris[1]), far_box = box_of(tris[0]);
+    Bounds root = near_box;
+    root.grow(far_box);
+    Bvh b;
+    b.nodes = {{root.min, 2, root.max, 0, 0}, {near_box.min, 0, near_box.max, 1, 0}, {far_box.min, 1, far_box.max, 1, 0}};
+    b.object_index = {1, 0};
+    return b;
+}
+
+}  // namespace
+
+GRADED_TEST("bvh_query: a box the ray enters one float step past the best hit's t is searched, for its triangle may be hit at that t",
+            "10.4", 2)
+{
+    // Two triangles in the plane x = 3, both crossed by the ray from the origin along (1, 0.1, 0.1),
+    // which meets the plane at t = 3 exactly. 02.5's watertight test rounds both hits to the float
+    // below 3, 2.99999976; the slab test enters each triangle's flat box at 3 itself: one float
+    // step past those hits. Object 1's leaf comes first; object 0, in the other leaf, ties it and
+    // has the lower number.
+    const Ray ray{{0, 0, 0}, {1, 0.1f, 0.1f}};
+    const std::vector<Triangle> tris = {{{3, -3, -3}, {3, 3, -3}, {3, -3, 8}}, {{3, -3, -3}, {3, 5, -3}, {3, -3, 6}}};
+    const Objects objects = triangles_over(tris);
+    const Bvh b = own_leaves(tris);
+    const float below = std::nextafter(3.0f, 0.0f);
+    ObjectHit want, first;
+    REQUIRE(brute_force().closest(ray, {0.0f, infinity}, objects, want));
+    REQUIRE(objects.intersect(1, ray, {0.0f, infinity}, first));
+    const std::optional<Interval> far_box = slab_interval(b.nodes[2].bounds(), RaySlabs(ray), {0.0f, infinity});
+    // The case's own set-up: both hits at the float below 3, the far leaf's box entered at 3.
+    REQUIRE((want.object == 0 && want.t == below && first.t == below && far_box && far_box->min == 3.0f));
+    ObjectHit hit;
+    reset_counters();
+    const bool found = bvh_query(b, ray, {0.0f, infinity}, objects, false, hit);
+    const std::uint64_t tests = counter(Counter::intersection_tests);
+    INFO("10.4: " << show(ray) << "; the near leaf holds object 1, hit at t = " << std::setprecision(9) << below
+         << "; the far leaf's box is entered at t = 3, one float step past that hit, and holds object 0, hit at "
+         << below << " too (the triangle test rounds below where the slab test enters its box). Got " << answer(found, hit)
+         << " after " << tests << " tests; expected " << show(want) << " after 2 tests: a box entered one float step past "
+         "the best hit's t is searched, and the tie goes to the lower number");
+    CHECK(found);
+    CHECK(hit.object == want.object);
+    CHECK(hit.t == want.t);
+    CHECK(tests == 2);
 }
