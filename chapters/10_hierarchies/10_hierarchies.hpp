@@ -134,21 +134,23 @@ constexpr int bvh_stack_size = 64;
 // EXERCISE 10.4: the BVH's query, for both kinds: whether the ray hits an object of the tree with t
 // strictly inside `range` (as objects.intersect hits it), and which.
 //  - Closest hit (any_hit false): the nearest hit of all the tree's objects, object and t as brute
-//    force answers; at equal t the lower object number wins. True, with that hit in `hit`.
+//    force answers; at equal t the lower object number wins. True, with that hit in `hit`. (Brute
+//    force's answer, that is, on the kit's trees: their boxes hold their objects' grown by a margin
+//    (bvh.hpp), which covers the rounding of a hit's t.)
 //  - Any hit (any_hit true): the first object hit, in the order below, ends the query at once,
 //    nearer or not: true, with that hit in `hit`, and no further object tested.
 //  - A tree of no nodes, and a ray that is not valid_ray (bounds.hpp), hit nothing: false, with no
-//    node read.
+//    node read. After a miss `hit` is unspecified.
 //  - The order: from the root, each inner node's near child and all below it before its far child.
 //    Along the node's axis the near child is the first (the node right after it) when the ray's
 //    direction there is positive, however small (1.4e-45); with 0, -0 or a negative direction, the
 //    second (`first`).
 //  - Which boxes are searched: a node's box is met as slab_interval says (the robust slab test,
 //    with the ray's RaySlabs), so no ray slips between boxes that share a face. A box the ray meets
-//    within the range no farther than the best hit so far, at best.t itself included (a
-//    lower-numbered object there may tie), is searched; one it meets only beyond the best hit is
-//    passed over, its objects not tested. (The kit searches a box met one float step past best.t
-//    too: nothing in it can win.)
+//    within the range no farther than one float step past the best hit so far
+//    (std::nextafter(best.t, infinity)) is searched: a lower-numbered object there may tie, as the
+//    slab test can meet a box a step or more past a t its own object's test rounds to. One it meets
+//    only beyond that is passed over, its objects not tested.
 //  - Counts: each node whose box is tested counts once (count(Counter::nodes_visited)), a box then
 //    passed over included; each object asked counts its own test (objects.intersect counts it).
 // The lesson's section "The traversal (EXERCISE 10.4)" derives it.
