@@ -127,17 +127,22 @@ Objects triangles_over(const std::vector<Triangle>& tris)
     return o;
 }
 
-// The root split along x; node 1, its first child (the near one along +x), holds object 1 at
-// x = 4; node 2, the second, holds object 0, its box starting at x = `second_min_x`.
-Bvh tie_tree(const std::vector<Triangle>& tris, float second_min_x)
+// Two leaves under a root split along x: node 1, the first child (the near one along +x), holds
+// object 1 in `near_box`; node 2 holds object 0 in `far_box`; the root's box is around both.
+Bvh two_leaves(const Bounds& near_box, const Bounds& far_box)
 {
-    const float second_max_x = tris[0].a.x;
+    Bounds root = near_box;
+    root.grow(far_box);
     Bvh b;
-    b.nodes = {{{std::min(4.0f, second_min_x), -1, -1}, 2, {std::max(4.0f, second_max_x), 3, 3}, 0, 0},
-               {{4, -1, -1}, 0, {4, 3, 3}, 1, 0},
-               {{second_min_x, -1, -1}, 1, {second_max_x, 3, 3}, 1, 0}};
+    b.nodes = {{root.min, 2, root.max, 0, 0}, {near_box.min, 0, near_box.max, 1, 0}, {far_box.min, 1, far_box.max, 1, 0}};
     b.object_index = {1, 0};
     return b;
+}
+
+// Object 1 at x = 4 in the near leaf; object 0 in the far one, its box starting at x = `second_min_x`.
+Bvh tie_tree(const std::vector<Triangle>& tris, float second_min_x)
+{
+    return two_leaves({{4, -1, -1}, {4, 3, 3}}, {{second_min_x, -1, -1}, {tris[0].a.x, 3, 3}});
 }
 
 }  // namespace
@@ -253,9 +258,8 @@ GRADED_TEST("bvh_query: the least positive direction along the node's axis is po
 
 namespace {
 
-// A leaf of its own for each of two triangles, under a root split along x: node 1 (the first
-// child, the near one along +x) holds object 1, node 2 holds object 0; each leaf's box is its
-// triangle's box, and the root's box is around both.
+// Each of two triangles in a leaf of its own (two_leaves), its box exactly its corners' box: no
+// margin, so a flat triangle's box is met where its plane is.
 Bvh own_leaves(const std::vector<Triangle>& tris)
 {
     const auto box_of = [](const Triangle& t) {
@@ -263,13 +267,7 @@ Bvh own_leaves(const std::vector<Triangle>& tris)
         b.grow(t.a), b.grow(t.b), b.grow(t.c);
         return b;
     };
-    const Bounds near_box = box_of(tris[1]), far_box = box_of(tris[0]);
-    Bounds root = near_box;
-    root.grow(far_box);
-    Bvh b;
-    b.nodes = {{root.min, 2, root.max, 0, 0}, {near_box.min, 0, near_box.max, 1, 0}, {far_box.min, 1, far_box.max, 1, 0}};
-    b.object_index = {1, 0};
-    return b;
+    return two_leaves(box_of(tris[1]), box_of(tris[0]));
 }
 
 }  // namespace
