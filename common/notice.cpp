@@ -11,7 +11,7 @@ namespace {
 
 std::atomic<bool> notices_on{true};
 std::mutex print_mutex;
-std::vector<std::string>* captured = nullptr;  // a NoticeCapture's lines, under print_mutex
+std::vector<std::string>* captured = nullptr;  // the live NoticeCapture's lines, under print_mutex
 
 }  // namespace
 
@@ -33,20 +33,19 @@ NoticeCapture::NoticeCapture()
     const std::lock_guard<std::mutex> lock(print_mutex);
     if (captured)
         throw std::logic_error("NoticeCapture: one at a time");
-    captured = new std::vector<std::string>;
+    captured = &lines_;
 }
 
 NoticeCapture::~NoticeCapture()
 {
     const std::lock_guard<std::mutex> lock(print_mutex);
-    delete captured;
     captured = nullptr;
 }
 
 std::vector<std::string> NoticeCapture::lines() const
 {
     const std::lock_guard<std::mutex> lock(print_mutex);
-    return *captured;
+    return lines_;
 }
 
 bool NoticeCapture::said(const std::string& words) const

@@ -29,6 +29,9 @@ public:
     std::vector<std::string> lines() const;
     // Whether some line said so far contains `words`.
     bool said(const std::string& words) const;
+
+private:
+    std::vector<std::string> lines_;  // written by notice(), under its lock
 };
 
 }  // namespace rt

@@ -73,8 +73,9 @@ constexpr double hashed_memory_factor = 8.0;
 // Why 64 MB: below it a build's memory concerns no machine the kit runs on, whatever the ratio
 // (chapter 07's dense grid alone may take 128 MB of offsets, max_grid_cells). As below
 // grid_pays_floor tests a ray, a scene of a few thousand objects keeps the lambda it asks for
-// without a word. The chapter's figure, the stadium at lambda 256, holds 37 MB at its peak, 24
-// times its dense grid's 1.5 MB: the memory that buys its tenfold speed.
+// without a word. The chapter's figure, the stadium at lambda 256, stays under it, many times its
+// dense grid's memory: the memory that buys its tenfold speed (the lesson's "When the build says what
+// it holds" gives the figures).
 constexpr double hashed_memory_floor = 64e6;
 
 // The most the hashed grid's build holds at once, in bytes, from its counts: each object's range of

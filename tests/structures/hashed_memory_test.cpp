@@ -1,5 +1,5 @@
-// The hashed grid's memory (issue 43): a flat scene of 8,000 triangles took 100 MB at lambda 256,
-// 106 times chapter 07's dense grid, and 50,000 of them 626 MB, without a word. A build that holds
+// The hashed grid's memory: a flat scene fills every cell of its one layer, and at lambda 256 its
+// build holds about a hundred times chapter 07's dense grid. A build that holds
 // more than hashed_memory_factor times the dense grid's memory at lambda 4, and more than
 // hashed_memory_floor, says so in one notice, with the lambdas that would not; the lambda asked for
 // is built all the same. Every scene of legal_scenes_test.cpp is held to the same rule there.

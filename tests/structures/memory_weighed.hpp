@@ -1,4 +1,4 @@
-// The hashed grid's word on its memory (chapter 09's hashed_grid.hpp, issue 43): a build that holds
+// The hashed grid's word on its memory (chapter 09's hashed_grid.hpp): a build that holds
 // more than hashed_memory_factor times what chapter 07's dense grid at its default lambda holds for
 // the same objects, and more than hashed_memory_floor, says so in one notice; any other says
 // nothing of it. The dense grid's figure is taken from a dense grid built here, the hashed grid's
