@@ -56,6 +56,8 @@ point3 point_on_rectangle(const AreaLight& light, sample2 u);
 //    lands on it.
 //  - Never a NaN, even at the square's centre u = (1/2, 1/2), where the concentric map's ratio is
 //    0 / 0 (it goes to the light's centre).
+//  - Continuous: u a hair apart land a hair apart, on the square's middle lines and diagonals too
+//    (no line of the square sent to the centre, no quarter's angle running the other way).
 // Example (the concentric map, a disc of radius 1 at (0, 3, 0), axis_u (1, 0, 0), axis_v (0, 0, 1)):
 // u = (1/2, 1/2) gives (0, 3, 0); u = (1, 1/2) gives (1, 3, 0) on the rim along axis_u; u = (1, 1)
 // gives (0.7071, 3, 0.7071). A quarter of uniform points land within half the radius.

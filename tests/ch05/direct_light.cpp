@@ -406,19 +406,19 @@ GRADED_TEST("direct_light: a light the least float above the surface's plane and
     }
 }
 
-GRADED_TEST("direct_light: an eye ray climbing the least float (n.dir = 2^-149) sees the floor's underside, one sinking the least float its top", "05.4", 1)
+GRADED_TEST("direct_light: an eye ray climbing the least float (n.dir = 2^-149) sees the floor's underside; one along it (n.dir = 0) or sinking the least float, its top", "05.4", 1)
 {
     // The normal is turned toward the eye as chapter 04's shade turns it: when n.dir > 0 the ray came
     // from behind the surface. At the float's resolution: the ray climbing 2^-149 per unit (from
     // 4 * 2^-149 below the floor) sees the underside, lit by a light below; the one sinking 2^-149
-    // sees the top, lit by a light above.
+    // sees the top, lit by a light above, and so does one exactly along the floor (n.dir = 0: n kept).
     const point3 p{0.25f, 0.0f, 0.0f};
     FloorView v = exact_floor_view(p);
     v.hit.n = v.hit.ng = vec3(0.0f, 1.0f, 0.0f);
     const float least = std::ldexp(1.0f, -149);
     const AreaLight above = disc_light(p + vec3(0.3f, 2.0f, 0.1f), down, 0.5f, warm);
     const AreaLight below = disc_light(p + vec3(0.3f, -2.0f, 0.1f), {0, 1, 0}, 0.5f, warm);
-    for (const float climb : {least, -least}) {
+    for (const float climb : {least, 0.0f, -least}) {
         const vec3 dir{0.0f, climb, -1.0f};
         v.ray = Ray{p - 4.0f * dir, dir};
         REQUIRE(glm::dot(v.hit.n, v.ray.dir) == climb);

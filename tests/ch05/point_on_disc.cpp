@@ -114,6 +114,39 @@ GRADED_TEST("point_on_disc: the angle is uniform too, each of 8 sectors gets an 
     }
 }
 
+GRADED_TEST("point_on_disc: u a hair apart land a hair apart, across the square's middle lines and diagonals too", "05.2", 2)
+{
+    // Both area-preserving maps are continuous inside the square: a step of 2^-20 in u moves the
+    // point at most about 1e-3 radii (the polar map's sqrt near u.x = 0; the concentric map's far
+    // less). A map that sends a middle line to the centre (a = 0 or b = 0 taken for a = b = 0), or
+    // turns a quarter over (its angle running the other way), jumps there: rings and sectors, whose
+    // shares count areas, never see it.
+    constexpr float step = 0x1p-20f;
+    constexpr double allowed = 0.01;
+    std::vector<float> coords = {0.0f, 0.5f, std::nextafter(0.5f, 0.0f), 0.25f, 0.75f, 0.9f, 0.1f, 1.0f - 2 * step};
+    Rng rng(57, 0);
+    for (int k = 0; k < 12; ++k)
+        coords.push_back(rng.next_float() * (1.0f - 2 * step));
+    for (const AreaLight& light : {tilted, ceiling}) {
+        double farthest = 0.0;  // a map that sends every u to one point is continuous, but no map of the disc
+        for (const float x : coords)
+            for (const float y : coords)
+                for (const sample2 u : {sample2(x, y), sample2(x, x), sample2(x, 1.0f - 2 * step - x)})
+                    for (const sample2 v : {sample2(u.x + step, u.y), sample2(u.x, u.y + step)}) {
+                        const OnLight a = on_light(light, point_on_disc(light, u)), b = on_light(light, point_on_disc(light, v));
+                        farthest = std::max(farthest, std::hypot(a.x, a.y));
+                        const double apart = std::hypot(a.x - b.x, a.y - b.y);
+                        INFO(show(light) << ": " << show(u) << " landed at (" << a.x << ", " << a.y << ") and " << show(v)
+                             << ", 2^-20 away, at (" << b.x << ", " << b.y << ") radii: " << apart
+                             << " apart; expected at most " << allowed);
+                        REQUIRE(apart <= allowed);
+                    }
+        INFO(show(light) << ": the farthest of these points landed " << farthest << " radii from the centre; expected them "
+             << "spread over the disc, some beyond 0.9");
+        REQUIRE(farthest > 0.9);
+    }
+}
+
 STABILITY_TEST("point_on_disc: never a NaN, at the square's centre (0/0 in the concentric map), corners and edges; its far corner on the rim", "05.2", 1)
 {
     const float below_half = std::nextafter(0.5f, 0.0f), above_half = std::nextafter(0.5f, 1.0f);
