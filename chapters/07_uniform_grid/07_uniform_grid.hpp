@@ -71,6 +71,11 @@ inline GridShape grid_shape(const Bounds& box, const cell3& n)
 //    a box of no extent at all, or no axis cut (lambda N of at most one cell; an infinite extent,
 //    whose side is infinite, even beside a flat axis). One object is a count like any other: its
 //    lambda cells.
+// Precision: float's, as the rule reads. pow and 1/d round (1/3 is no float), so s may be off by
+// up to 2^-15 of itself at the extreme volumes: an extent within 2^-15 of s, or an extent / s within
+// 2^-15 of a half, may go either way. Where the product of the cut extents, or s, would underflow
+// (an extent below about 2^-40, a subnormal one included), nothing is promised: the kit passes the
+// box scaled so its largest side lies in [0.5, 1) (grid.hpp's resolution_box).
 // Example: a floor 4 x 0.01 x 4 with 64 objects at lambda 1 gives 8 x 1 x 8: x and z are cut into
 // cells of side 0.5 (their area, 16, holds 64 of them, and both are wider than 0.5); y's 0.01 is no
 // wider than 0.5.
