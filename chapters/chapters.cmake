@@ -18,7 +18,8 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   target_link_libraries(ex_${nn} PUBLIC rt_common)
   # A stub's parameters are unused until the student writes the answer: no warning for that. (On the
   # file, whose options come after the target's -Wextra: clang lets the last of the two win.)
-  set_source_files_properties("${exercise_file}" PROPERTIES COMPILE_OPTIONS "${RT_NO_UNUSED_PARAMETER_WARNING}")
+  set_source_files_properties("${exercise_file}" PROPERTIES COMPILE_OPTIONS
+    "${RT_NO_UNUSED_PARAMETER_WARNING};${RT_STUDENT_ASSERTIONS}")
   if(RT_HAVE_SOLUTIONS)
     add_library(sol_${nn} OBJECT "${CMAKE_SOURCE_DIR}/solutions/${chapter}.cpp")
     target_link_libraries(sol_${nn} PUBLIC rt_common)

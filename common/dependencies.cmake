@@ -60,6 +60,16 @@ else()
   set(RT_NO_UNUSED_PARAMETER_WARNING -Wno-unused-parameter)
 endif()
 
+# The student's file (and a mutant of a solution) keeps its assertions in every build type: GLM
+# asserts that a vector's index is below its length, so a loop that runs one component too far
+# (a <= 3 over a vec3) stops its case with that message. A release build drops the assertion, and
+# glm's vec3 answers v[3] with v.x: the loop quietly does x twice, often with the right answer.
+if(MSVC)
+  set(RT_STUDENT_ASSERTIONS /UNDEBUG)
+else()
+  set(RT_STUDENT_ASSERTIONS -UNDEBUG)
+endif()
+
 # Float formulas mean what they say: no multiply and add fused into one rounding where the compiler
 # may choose to (GCC fuses across statements by default and clang within one, wherever the processor
 # has FMA: ARM, Apple silicon, x86-64 built for a recent -march). The kit's exact answers rest on
