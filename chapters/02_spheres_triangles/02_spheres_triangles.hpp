@@ -139,7 +139,8 @@ std::optional<TriangleHit<T>> hit_triangle_moller_trumbore(const BasicRay<T>& ra
 // neighbouring triangles compute from identical numbers: a ray through a shared edge or vertex of a
 // mesh never slips between its triangles, in float and in double, far from the origin too.
 // The lesson's section "Watertight (EXERCISE 02.5, advanced)" derives it.
-//  - The frame's z axis is the axis of v's largest component in magnitude.
+//  - The frame's z axis is the axis of v's largest component in magnitude; on a tie the later axis
+//    (z before y, y before x), as the lesson's steps take it.
 //  - Inside is decided by the signs of the three edge functions: inside when none is negative or
 //    none is positive (a 0 counts as either sign: edges and corners belong to the triangle, a point
 //    one float step outside them does not) and their sum is not 0.

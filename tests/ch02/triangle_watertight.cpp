@@ -62,16 +62,24 @@ struct WatertightSteps {
     std::optional<TriangleHit<float>> hit;  // what the test returns
 };
 
-// always_double: the mistake of recomputing the three in double even when none is 0 in float (the
-// answer float's own products and difference would not give), for counting where the two differ.
-WatertightSteps watertight_steps(const Ray& ray, const Triangle& tri, Interval range, bool always_double = false)
+// The mistakes these steps can make on purpose, for counting where a case tells them apart:
+// recomputing the three in double even when none is 0 in float (the answer float's own products and
+// difference would not give); taking the earlier axis on a tie of v's largest components.
+struct StepsMistake {
+    bool always_double = false;
+    bool earlier_axis_on_tie = false;
+};
+
+WatertightSteps watertight_steps(const Ray& ray, const Triangle& tri, Interval range, StepsMistake mistake = {})
 {
     WatertightSteps s;
     const vec3 n = glm::cross(tri.b - tri.a, tri.c - tri.a);
     if (n.x == 0 && n.y == 0 && n.z == 0)
         return s;
     const vec3 ad = glm::abs(ray.dir);
-    const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    // The largest |v[k]|; on a tie the later axis (the lesson's step 2).
+    const int kz = mistake.earlier_axis_on_tie ? (ad.x >= ad.y ? (ad.x >= ad.z ? 0 : 2) : (ad.y >= ad.z ? 1 : 2))
+                                               : (ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2));
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     if (ray.dir[kz] < 0)
         std::swap(kx, ky);
@@ -83,7 +91,7 @@ WatertightSteps watertight_steps(const Ray& ray, const Triangle& tri, Interval r
     s.U = cross_2d(Cx, Cy, Bx, By);
     s.V = cross_2d(Ax, Ay, Cx, Cy);
     s.W = cross_2d(Bx, By, Ax, Ay);
-    if (s.U == 0 || s.V == 0 || s.W == 0 || always_double) {
+    if (s.U == 0 || s.V == 0 || s.W == 0 || mistake.always_double) {
         s.fell_back = s.U == 0 || s.V == 0 || s.W == 0;
         s.U = static_cast<float>(cross_2d<double>(Cx, Cy, Bx, By));
         s.V = static_cast<float>(cross_2d<double>(Ax, Ay, Cx, Cy));
@@ -205,18 +213,50 @@ STABILITY_TEST("hit_triangle_watertight: where no edge function is 0 in float, U
         if (want.fell_back)
             return;
         ++in_float;
-        if (!same_answer(watertight_steps(ray, tri, Interval{}, true).hit, want.hit))
+        if (!same_answer(watertight_steps(ray, tri, Interval{}, {true, false}).hit, want.hit))
             ++telling;
         const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
         INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": no edge function is 0 in float, "
              << "so U = " << want.U << ", V = " << want.V << ", W = " << want.W << " as cross_2d gives them in float."
              << "\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
-             << (same_answer(got, watertight_steps(ray, tri, Interval{}, true).hit) && !same_answer(got, want.hit)
+             << (same_answer(got, watertight_steps(ray, tri, Interval{}, {true, false}).hit) && !same_answer(got, want.hit)
                      ? "that is the answer of U, V and W recomputed in double: only an edge function that is 0 "
                        "in float is recomputed"
                      : first_difference(got, want.hit)));
         REQUIRE(same_answer(got, want.hit));
     });
     INFO(in_float << " tests stayed in float; in " << telling << " of them a double recomputation changes the answer");
+    CHECK(telling >= 100);
+}
+
+GRADED_TEST("hit_triangle_watertight: on a tie of v's largest components the frame's z is the later axis (z before y, y before x): t, beta and gamma to the bit", "02.5", 2)
+{
+    // Directions whose two or three largest |v[k]| are equal: the lesson's step 2 takes the later
+    // axis. Another frame is as watertight, but shears the corners otherwise, and t, beta and gamma
+    // round to other bits (10.6's four lanes repeat this frame to the bit).
+    const IndexedMesh mesh = extremes::jittered_icosphere(15);
+    int tests = 0, telling = 0;
+    for (const vec3& v : {vec3(1, 1, 0.5f), vec3(-1, 1, -0.25f), vec3(0.75f, -2, 2), vec3(2, 0.5f, -2), vec3(1, 1, 1),
+                          vec3(-3, -3, -3), vec3(-1, 1, 0)}) {
+        const float f = 1e-3f;
+        for (std::size_t k = 0; k < mesh.faces.size(); k += 7) {
+            const Triangle tri{mesh.vertices[mesh.faces[k][0]], mesh.vertices[mesh.faces[k][1]], mesh.vertices[mesh.faces[k][2]]};
+            // From 4 lengths of v before a point inside the face, off its centre.
+            const point3 aim = (0.5f + f) * tri.a + 0.3f * tri.b + (0.2f - f) * tri.c;
+            const Ray ray{aim - 4.0f * v, v};
+            const WatertightSteps want = watertight_steps(ray, tri, Interval{});
+            ++tests;
+            if (!same_answer(watertight_steps(ray, tri, Interval{}, {false, true}).hit, want.hit))
+                ++telling;
+            const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
+            INFO(triangles::query(ray, tri, Interval{}) << ": v's largest components tie; the frame's z is the later "
+                 << "axis of the tie.\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
+                 << (same_answer(got, watertight_steps(ray, tri, Interval{}, {false, true}).hit)
+                         ? "that is the answer of the earlier axis's frame: on a tie take the later axis (z before y, y before x)"
+                         : first_difference(got, want.hit)));
+            REQUIRE(same_answer(got, want.hit));
+        }
+    }
+    INFO(tests << " tests; in " << telling << " of them the earlier axis's frame gives other bits");
     CHECK(telling >= 100);
 }
