@@ -16,7 +16,7 @@ const Build grid{"the grid", [](const Objects& objects, float lambda) { return s
                  [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
                      return suspect::diagnose_grid(dynamic_cast<const UniformGrid&>(built), ray, range, objects);
                  },
-                 suspect::diagnose_grid_build};
+                 suspect::diagnose_grid_build, "07.1 grid_resolution, 07.2 cell_of and 07.3 cells_overlapping"};
 
 }  // namespace
 

@@ -34,6 +34,8 @@ struct Build {
     SuspectFn suspect = {};
     // The same for a build that throws: what went wrong in the exercises the build uses.
     std::function<std::string(const Objects&, float lambda)> suspect_build = {};
+    // The exercises the build asks ("07.1 grid_resolution, ..."), said when the build crashes.
+    std::string build_asks = {};
 };
 
 // `rays` seeded rays: half from the view's eye into its field of view, half from points in and
@@ -42,7 +44,11 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
 {
     const Objects objects = objects_of(scene, lit_tests);
     const std::unique_ptr<Accelerator> built = [&] {
-        const WorkingOn on([&] { return "building " + build.structure + " over " + std::to_string(objects.size()) + " objects"; });
+        const WorkingOn on([&] {
+            return "building " + build.structure + " over " + std::to_string(objects.size()) + " objects" +
+                   (build.build_asks.empty() ? std::string()
+                                             : ", which asks your " + build.build_asks + ": a crash here is in one of them (start with their own cases)");
+        });
         try {
             return build.make(objects, lambda);
         } catch (const std::exception& e) {
