@@ -51,8 +51,8 @@ struct Diagnosis {
         s << "):";
         if (found) {
             s << "\n  likeliest " << found->exercise << ' ' << found->function << ": " << found->what;
-            s << "\n  see " << found->exercise << ", hint " << found->exercise << " (then hint " << found->exercise
-              << " 2), and its own cases, tagged [" << found->exercise << "]";
+            s << "\n  see " << found->exercise << ", hint " << found->exercise << " 2, the trap (./build/grade/hint "
+              << found->exercise << " 2; tier 1, the idea, without the 2), and its own cases, tagged [" << found->exercise << "]";
         } else {
             s << "\n  each keeps its promise on " << subject << "; the case exercises " << exercised
               << ": start with their own cases (tagged [NN.k]) and the one that fails there";
