@@ -6,6 +6,7 @@
 #include "04_shadow_feelers/nff_scene.hpp"
 #include "common/random.hpp"
 #include "tests/ch07/describe.hpp"
+#include "tests/ch07/suspect.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -84,7 +85,7 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
             s << show(ray) << ", t in (" << range.min << ", " << range.max << "), lambda " << lambda << ", "
               << objects.size() << " objects, through " << build.structure;
             if (build.suspect)
-                s << build.suspect(structure, ray, range, objects);
+                s << suspect::guarded([&] { return build.suspect(structure, ray, range, objects); });
             return s.str();
         });
         ObjectHit want, got;

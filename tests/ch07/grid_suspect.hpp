@@ -103,8 +103,8 @@ inline std::optional<GridWalk> check_start(Diagnosis& d, const GridShape& g, con
     const std::optional<Interval> inside = hit_bounds(g.box, ray, range);
     if (inside && !check_cell_of(d, g, ray.at(inside->min), "the entry point"))
         return std::nullopt;
-    const GridWalk got = start_walk(g, ray, range);
     d.check("07.4", "start_walk");
+    const GridWalk got = start_walk(g, ray, range);
     if (!inside) {
         missed = true;
         if (!got.missed)
