@@ -3,6 +3,7 @@
 // brute force does: the same object at the same t, bit for bit, and the same any-hit answer.
 #include "07_uniform_grid/figure.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch07/grid_suspect.hpp"
 
 using namespace rt;
 using namespace rt::grader;
@@ -10,7 +11,12 @@ using namespace rt::grader::agreement;
 
 namespace {
 
-const Build grid{"the grid", [](const Objects& objects, float lambda) { return std::make_unique<UniformGrid>(objects, lambda); }};
+// A failing case runs the grid's exercises again on the first ray that differs (grid_suspect.hpp).
+const Build grid{"the grid", [](const Objects& objects, float lambda) { return std::make_unique<UniformGrid>(objects, lambda); },
+                 [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                     return suspect::diagnose_grid(dynamic_cast<const UniformGrid&>(built), ray, range, objects);
+                 },
+                 suspect::diagnose_grid_build, "07.1 grid_resolution, 07.2 cell_of and 07.3 cells_overlapping"};
 
 }  // namespace
 

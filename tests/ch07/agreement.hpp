@@ -6,6 +6,7 @@
 #include "04_shadow_feelers/nff_scene.hpp"
 #include "common/random.hpp"
 #include "tests/ch07/describe.hpp"
+#include "tests/ch07/suspect.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -16,7 +17,8 @@ namespace rt::grader::agreement {
 
 struct Disagreement {
     int rays = 0, wrong = 0;
-    std::string first;  // the first wrong answer, in words
+    std::string first;    // the first wrong answer, in words
+    std::string suspect;  // the diagnosis of that ray (Build::suspect), lines that each start with a newline
 };
 
 inline std::string answer(bool found, const ObjectHit& h) { return found ? show(h) : "no hit"; }
@@ -24,9 +26,17 @@ inline std::string answer(bool found, const ObjectHit& h) { return found ? show(
 // What a test builds from a scene's objects at a density: the accelerator under test, and how a
 // failure names it ("the grid", "the BVH").
 using BuildFn = std::function<std::unique_ptr<Accelerator>(const Objects&, float lambda)>;
+// What a failing case says about the first ray that differs: the chapter's exercises run again on
+// that ray, each held to its own contract (tests/ch07/suspect.hpp), as lines to add to the failure.
+using SuspectFn = std::function<std::string(const Accelerator&, const Ray&, Interval, const Objects&)>;
 struct Build {
     std::string structure;
     BuildFn make;
+    SuspectFn suspect = {};
+    // The same for a build that throws: what went wrong in the exercises the build uses.
+    std::function<std::string(const Objects&, float lambda)> suspect_build = {};
+    // The exercises the build asks ("07.1 grid_resolution, ..."), said when the build crashes.
+    std::string build_asks = {};
 };
 
 // `rays` seeded rays: half from the view's eye into its field of view, half from points in and
@@ -35,8 +45,18 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
 {
     const Objects objects = objects_of(scene, lit_tests);
     const std::unique_ptr<Accelerator> built = [&] {
-        const WorkingOn on([&] { return "building " + build.structure + " over " + std::to_string(objects.size()) + " objects"; });
-        return build.make(objects, lambda);
+        const WorkingOn on([&] {
+            return "building " + build.structure + " over " + std::to_string(objects.size()) + " objects" +
+                   (build.build_asks.empty() ? std::string()
+                                             : ", which asks your " + build.build_asks + ": a crash here is in one of them (start with their own cases)");
+        });
+        try {
+            return build.make(objects, lambda);
+        } catch (const std::exception& e) {
+            if (build.suspect_build)
+                FAIL(e.what() << build.suspect_build(objects, lambda));
+            throw;
+        }
     }();
     const Accelerator& structure = *built;
     Bounds box;
@@ -59,10 +79,13 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
             ray = {box.min - 0.25f * e + 1.5f * e * vec3(u(), u(), u()), glm::normalize(dir)};
         }
         const Interval range{u() < 0.5f ? 0.0f : 1e-4f, u() < 0.2f ? glm::length(e) * u() : infinity};
+        // Said only when the query crashes: then the diagnosis runs on this ray, as for a wrong answer.
         const WorkingOn on([&] {
             std::ostringstream s;
             s << show(ray) << ", t in (" << range.min << ", " << range.max << "), lambda " << lambda << ", "
               << objects.size() << " objects, through " << build.structure;
+            if (build.suspect)
+                s << suspect::guarded([&] { return build.suspect(structure, ray, range, objects); });
             return s.str();
         });
         ObjectHit want, got;
@@ -79,6 +102,8 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
                   << ": brute force finds " << answer(want_found, want) << " (any-hit " << want_any << "), " << build.structure << ' '
                   << answer(got_found, got) << " (any-hit " << got_any << ")";
                 d.first = s.str();
+                if (build.suspect)
+                    d.suspect = build.suspect(structure, ray, range, objects);
             }
         }
     }
@@ -92,7 +117,7 @@ inline void check_scene(const Build& build, const NffScene& nff, int rays_per_la
     for (const float lambda : {0.3f, 2.0f, 9.0f})
         compare(build, scene, nff.view, lambda, rays_per_lambda, ++seed, d);
     INFO(nff.name << " (" << objects_of(scene, lit_tests).size() << " objects): " << d.wrong << " of " << d.rays
-         << " rays answered differently from brute force; the first: " << d.first);
+         << " rays answered differently from brute force; the first: " << d.first << d.suspect);
     CHECK(d.wrong == 0);
 }
 
@@ -126,7 +151,7 @@ inline void check_hard_cases(const Build& build)
     view.at = point3(2, 2, 2);
     for (const float lambda : {0.5f, 4.0f})
         compare(build, twins, view, lambda, 1500, 40, d);
-    INFO("twin triangles: " << d.wrong << " of " << d.rays << " rays answered differently; the first: " << d.first);
+    INFO("twin triangles: " << d.wrong << " of " << d.rays << " rays answered differently; the first: " << d.first << d.suspect);
     CHECK(d.wrong == 0);
 
     // A floor 1e4 across under 200 spheres of radius 1e-3: the floor is in every cell of its layer.
@@ -145,7 +170,7 @@ inline void check_hard_cases(const Build& build)
         for (const float lambda : {1.0f, 16.0f})
             compare(build, mixed, near, lambda, 2000, 50, m);
         INFO("a floor under tiny spheres, offset by " << offset << ": " << m.wrong << " of " << m.rays
-             << " rays answered differently; the first: " << m.first);
+             << " rays answered differently; the first: " << m.first << m.suspect);
         CHECK(m.wrong == 0);
     }
 }

@@ -4,6 +4,7 @@
 #include "07_uniform_grid/figure.hpp"
 #include "08_mailboxing/figure.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch08/mailbox_suspect.hpp"
 
 #include <limits>
 
@@ -13,8 +14,12 @@ using namespace rt::grader::agreement;
 
 namespace {
 
+// A failing case replays the query on the first ray that differs, exercise by exercise (mailbox_suspect.hpp).
 const Build mailboxed{"the grid with mailboxes",
-                      [](const Objects& objects, float lambda) { return std::make_unique<MailboxGrid>(objects, lambda); }};
+                      [](const Objects& objects, float lambda) { return std::make_unique<MailboxGrid>(objects, lambda); },
+                      [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                          return suspect::diagnose_mailboxed(dynamic_cast<const MailboxGrid&>(built), ray, range, objects);
+                      }};
 
 std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
 
@@ -42,7 +47,7 @@ GRADED_TEST("with mailboxes no object is tested twice by one ray: each ray's tes
     const MailboxGrid grid(objects, 8.0f);
     Rng rng(21, 2);
     int different = 0, rays = 0, twice = 0;
-    std::string first_twice;
+    std::string first_twice, first_different;
     std::uint64_t plain_tests = 0, tests = 0, answers = 0;
     for (int k = 0; k < 2000; ++k) {
         const point3 o(4 * rng.next_float() - 2, 1.5f * rng.next_float(), 4 * rng.next_float() - 2);
@@ -58,7 +63,9 @@ GRADED_TEST("with mailboxes no object is tested twice by one ray: each ray's tes
         tests += ray_tests;
         answers += counter(Counter::mailbox_hits);
         ++rays;
-        different += a.object != b.object || a.t != b.t;
+        if ((a.object != b.object || a.t != b.t) && different++ == 0)
+            first_different = show(Ray{o, d}) + ": without mailboxes " + show(a) + ", with them " + show(b) +
+                              suspect::diagnose_mailboxed(grid, {o, d}, {0.0f, infinity}, objects);
         // Each test stores the ray's signature in its object's mailbox: the objects this ray tested
         // are those whose mailbox holds its signature, and each was tested once only if there are
         // as many of them as tests. (A ray that meets no cell takes no signature and tests nothing.)
@@ -69,14 +76,15 @@ GRADED_TEST("with mailboxes no object is tested twice by one ray: each ray's tes
                 tested += box.ray == signature;
         if (ray_tests != tested && twice++ == 0)
             first_twice = show(Ray{o, d}) + ": " + std::to_string(ray_tests) + " tests, of " + std::to_string(tested) +
-                          " objects (their mailboxes hold the ray's signature " + std::to_string(signature) + ")";
+                          " objects (their mailboxes hold the ray's signature " + std::to_string(signature) + ")" +
+                          suspect::diagnose_mailboxed(grid, {o, d}, {0.0f, infinity}, objects);
     }
     INFO(rays << " seeded rays through the sticks at 8 cells per object: " << twice << " rays made more tests than the "
          "objects they tested (or tested objects their mailboxes do not show); the first: " << first_twice);
     CHECK(twice == 0);
     INFO("without mailboxes " << plain_tests << " tests; with them " << tests << " tests and " << answers
          << " answers from mailboxes (they must add up to " << plain_tests << ", with fewer tests); " << different
-         << " rays answered differently");
+         << " rays answered differently" << (different ? "; the first: " + first_different : std::string()));
     CHECK(different == 0);
     CHECK(tests + answers == plain_tests);
     CHECK(answers > 0);
@@ -111,7 +119,7 @@ GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature cou
         if (w != g || (w && (want.object != got.object || want.t != got.t))) {
             if (wrong++ == 0)
                 first = "ray " + std::to_string(k) + ": brute force " + (w ? show(want) : "no hit") + ", the grid " +
-                        (g ? show(got) : "no hit");
+                        (g ? show(got) : "no hit") + suspect::diagnose_mailboxed(grid, rays[k], {0.0f, infinity}, objects, true);
         }
     }
     INFO("400 rays, the signature counter set to 2^32 - 1 after the first 200, so that rays 200-399 reuse "
@@ -132,7 +140,7 @@ GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature cou
     const bool b = single.closest({{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, hit);
     INFO("ray A passes the sphere by (signature 1): " << (a ? "hit" : "no hit") << "; the counter wraps; ray B, "
          "aimed at the sphere's centre with signature 1 again: " << (b ? show(hit) : "no hit")
-         << "; expected a hit at t = 4.5");
+         << "; expected a hit at t = 4.5" << (a || !b ? suspect::diagnose_mailboxed(single, {{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, true) : ""));
     CHECK(!a);
     CHECK(b);
     // A counter that wraps on a set whose mailboxes are still empty: the signature must not be 0,
@@ -141,6 +149,7 @@ GRADED_TEST("the grid with mailboxes stays right across the 32-bit signature cou
     fresh.mailboxes().last_signature = std::numeric_limits<std::uint32_t>::max();
     const bool c = fresh.closest({{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, hit);
     INFO("a fresh grid whose counter wraps at its first ray, aimed at the sphere: " << (c ? show(hit) : "no hit")
-         << " (signature " << fresh.mailboxes().last_signature << "); expected a hit");
+         << " (signature " << fresh.mailboxes().last_signature << "); expected a hit"
+         << (c ? "" : suspect::diagnose_mailboxed(fresh, {{-5, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, sphere, true)));
     CHECK(c);
 }

@@ -2,6 +2,7 @@
 // brute force's answers on every ray, at resolutions far beyond the dense grid's.
 #include "09_hashed_voxels/figure.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch09/hashed_suspect.hpp"
 
 using namespace rt;
 using namespace rt::grader;
@@ -10,8 +11,12 @@ using namespace rt::grader::agreement;
 namespace {
 
 // The agreement tests' densities times 100: 30 to 900 cells per object.
+// A failing case replays the query on the first ray that differs, exercise by exercise (hashed_suspect.hpp).
 const Build hashed{"the hashed grid",
-                   [](const Objects& objects, float lambda) { return std::make_unique<HashedGrid>(objects, 100.0f * lambda); }};
+                   [](const Objects& objects, float lambda) { return std::make_unique<HashedGrid>(objects, 100.0f * lambda); },
+                   [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                       return suspect::diagnose_hashed(dynamic_cast<const HashedGrid&>(built), ray, range, objects);
+                   }};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include "common/random.hpp"
 #include "tests/grader/graded.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,11 @@ struct Escapes {
     std::string scene;  // the sphere, in words
 };
 
-// Builds a Tree (an Accelerator made from Objects) over the sphere and shoots `rays` rays.
+// Builds a Tree (an Accelerator made from Objects) over the sphere and shoots `rays` rays;
+// `explain`, when given, adds its words on the first ray that got out (a diagnosis, suspect.hpp).
 template <class Tree>
-Escapes escapes_from_closed_sphere(int rays, std::uint64_t seed)
+Escapes escapes_from_closed_sphere(int rays, std::uint64_t seed,
+                                   const std::function<std::string(const Tree&, const Ray&, const Objects&)>& explain = {})
 {
     const point3 centre(148376.0f, 1234.0f, -223423.0f);
     const IndexedMesh mesh = icosphere(centre, 1000.0f, 4);
@@ -41,7 +44,7 @@ Escapes escapes_from_closed_sphere(int rays, std::uint64_t seed)
         const vec3 d = glm::normalize(vec3(2 * rng.next_float() - 1, 2 * rng.next_float() - 1, 2 * rng.next_float() - 1));
         ObjectHit hit;
         if (!tree.closest({from, d}, {0.0f, infinity}, o, hit) && e.escaped++ == 0)
-            e.first = show(Ray{from, d});
+            e.first = show(Ray{from, d}) + (explain ? explain(tree, Ray{from, d}, o) : std::string());
     }
     return e;
 }

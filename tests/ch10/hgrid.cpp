@@ -2,6 +2,7 @@
 // seeded rays through hierarchies built by hgrid.hpp.
 #include "10_hierarchies/figure.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch10/hgrid_suspect.hpp"
 
 #include <filesystem>
 #include <iomanip>
@@ -60,6 +61,10 @@ const Build hgrid{"the hierarchy of grids", [](const Objects& objects, float lam
                       s.leaf_size = 2;
                       s.max_depth = 3;
                       return std::make_unique<HGridAccel>(objects, s);
+                  },
+                  // A failing case asks 10.5 again on the first ray that differs (hgrid_suspect.hpp).
+                  [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                      return suspect::diagnose_hgrid(dynamic_cast<const HGridAccel&>(built).hgrid(), ray, range, objects);
                   }};
 
 }  // namespace

@@ -1,6 +1,7 @@
 // EXERCISE 10.4: the traversal, on a tree built by hand and against brute force on seeded rays.
 #include "10_hierarchies/figure.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch10/bvh_suspect.hpp"
 #include "tests/ch10/closed_sphere.hpp"
 
 #include <filesystem>
@@ -37,11 +38,26 @@ Bvh two_leaves()
     return b;
 }
 
-const Build bvh{"the BVH", [](const Objects& objects, float) { return std::make_unique<BvhAccel>(objects); }};
-const Build median{"the BVH split at the median", [](const Objects& objects, float) {
+// A failing case runs the BVH's exercises again on the first ray that differs (bvh_suspect.hpp).
+std::string suspect_bvh(const Accelerator& built, const Ray& ray, Interval range, const Objects& objects)
+{
+    return suspect::diagnose_bvh(dynamic_cast<const BvhAccel&>(built).bvh(), ray, range, objects);
+}
+
+const char* const bvh_build_asks = "10.1 sah_cost, 10.2 best_split and 10.3 make_leaf";
+
+const Build bvh{"the BVH", [](const Objects& objects, float) { return std::make_unique<BvhAccel>(objects); }, suspect_bvh, {},
+                bvh_build_asks};
+const Build median{"the BVH split at the median",
+                   [](const Objects& objects, float) {
                        BvhSettings s;
                        s.split = BvhSplit::median;
                        return std::make_unique<BvhAccel>(objects, s);
+                   },
+                   [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                       BvhSettings s;
+                       s.split = BvhSplit::median;
+                       return suspect::diagnose_bvh(dynamic_cast<const BvhAccel&>(built).bvh(), ray, range, objects, s);
                    }};
 
 }  // namespace
@@ -106,7 +122,9 @@ STABILITY_TEST("the BVH answers as brute force does on ties, a huge floor and fa
 STABILITY_TEST("watertight together: 10^6 rays from inside a closed sphere of triangles far from the origin all hit it", "10.A", 4)
 {
     // The BVH's robust slab test and the watertight triangle test must let no ray out.
-    const Escapes e = escapes_from_closed_sphere<BvhAccel>(1000000, 1234);
+    const Escapes e = escapes_from_closed_sphere<BvhAccel>(1000000, 1234, [](const BvhAccel& tree, const Ray& ray, const Objects& o) {
+        return suspect::diagnose_bvh(tree.bvh(), ray, {0.0f, infinity}, o);
+    });
     INFO("10^6 rays from within 200 of the centre of " << e.scene << ": " << e.escaped << " escaped; the first: " << e.first);
     CHECK(e.escaped == 0);
 }

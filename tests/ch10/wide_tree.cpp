@@ -4,6 +4,7 @@
 #include "10_hierarchies/figure.hpp"
 #include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
+#include "tests/ch10/wide_suspect.hpp"
 
 #include <string>
 
@@ -25,6 +26,10 @@ Build wide(int leaf_size)
                 s.split = BvhSplit::median;
                 s.leaf_size = leaf_size;
                 return std::make_unique<WideBvhAccel>(objects, s);
+            },
+            // A failing case asks 10.6 again on every block for the first ray that differs (wide_suspect.hpp).
+            [](const Accelerator& built, const Ray& ray, Interval range, const Objects&) {
+                return suspect::diagnose_wide(dynamic_cast<const WideBvhAccel&>(built).tree(), ray, range);
             }};
 }
 
