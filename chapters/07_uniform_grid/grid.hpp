@@ -23,12 +23,33 @@
 
 namespace rt {
 
-// Why 1e-5 of the scene's size: a hit's t carries a relative error of a few 1e-7 to 1e-6
-// (chapter 02's table), so the hit point can stand that far, times its distance, outside the
-// object's box, and the walk's boundaries are rounded too. Each object is listed in the cells its
-// box reaches when grown by this margin, so a hit found near a cell boundary is always inside a
-// cell that lists its object. It costs a few extra references where a box ends next to a boundary.
-constexpr float grid_margin = 1e-5f;
+// Why each object's box grows by a margin: a hit's t carries its test's rounding, so the point
+// o + t d it stands for can lie a little outside the object's own box, and the walk's cell
+// boundaries and the slab test's t are rounded too. Brute force reports such a hit; a structure must
+// meet the object's box (or a cell listing it) at that t as well.
+//
+// How much: each of those roundings is a relative error of u = 2^-24 of the magnitudes it combines
+// (Goldberg's model, as pbrt's error bounds count it: Pharr, Jakob and Humphreys, "Physically Based
+// Rendering", 3rd ed., sec. 3.9), and the magnitudes are distances from the ray's origin o to the
+// point p and the coordinates of p and of the box: a t measures |p - o|, never the scene's size.
+//  - the sphere test (02.2) works in double and rounds t to float once: 1 float step of t, 2u |p - o|;
+//  - the watertight test (02.5) gives t as a weighted mean of the corners' heights along the ray,
+//    each carrying a few roundings (watertight_error.hpp, after pbrt sec. 3.9.6): about 9u of the
+//    corners' distance from o, at most |p - o| plus the triangle's own size;
+//  - the slab test's near t, (plane - o) / d, three roundings: 3u |p - o| (its far t is widened
+//    already: Ize, "Robust BVH Ray Traversal", 2013, bounds.hpp);
+//  - the box itself (its corners rounded from a centre and radius, then grown) and a grid's cell
+//    boundaries (min + i s) and cell numbers ((p - min) / s): a few u of the coordinates, |p| and
+//    the grid's corner.
+// Rays start in the scene's box (surfaces) or near it (the eye), so |o| is at most the box's largest
+// coordinate magnitude R, and |p - o| <= R + |p|. The margin is 16 of those roundings,
+// 2^-20 (R + |p|), with |p| the object's own largest coordinate magnitude: it follows the rounding
+// of the coordinates it protects, not the scene's size. (A fixed fraction of the extent cannot:
+// 100,000 spheres in a box 0.01 across beside one sphere 1000 away would grow by 1e-5 of 1000, wider
+// than the cluster, and no cell or node could sort it apart; here they grow by 0.00095.) An eye
+// farther out than R is covered by the slack: the roundings above add up to about 16 u only in the
+// worst case, and most tests' t is within one or two float steps.
+constexpr float margin_roundings = 0x1p-20f;  // 16 u
 
 // Why 1 << 25 cells (32 Mi, 128 MB of offsets): a dense grid pays for every cell, empty or not;
 // past this the build would take seconds and most of the machine's memory for one scene. A lambda
@@ -97,14 +118,26 @@ struct GridStats {
     double build_seconds = 0.0;
 };
 
-// The margin each object's box grows by: grid_margin of the scene's largest extent, and at least
-// a few float steps of its farthest coordinate (a scene far from the origin rounds coarser).
-inline float grid_margin_of(const Bounds& scene)
+// The largest coordinate magnitude of a box's corners (0 for an empty box).
+inline float magnitude(const Bounds& b)
 {
-    const float size = std::max({scene.extent().x, scene.extent().y, scene.extent().z});
-    const float far = std::max({std::abs(scene.min.x), std::abs(scene.min.y), std::abs(scene.min.z),
-                                std::abs(scene.max.x), std::abs(scene.max.y), std::abs(scene.max.z)});
-    return std::max(grid_margin * size, 16.0f * far * 0x1p-24f);
+    if (b.empty())
+        return 0.0f;
+    const vec3 m = glm::max(glm::abs(b.min), glm::abs(b.max));
+    return std::max({m.x, m.y, m.z});
+}
+
+// The margins of a scene's objects (margin_roundings above): reach is the scene box's largest
+// coordinate magnitude, where rays start; an object's box grows by 2^-20 (reach + its own
+// magnitude). Every structure of chapters 07-10 grows its objects' boxes by these.
+struct Margins {
+    float reach = 0.0f;
+    float of(const Bounds& object) const { return margin_roundings * (reach + magnitude(object)); }
+};
+
+inline Margins margins_of(const Bounds& scene)
+{
+    return {magnitude(scene)};
 }
 
 inline Bounds grown(const Bounds& b, float margin)
@@ -112,15 +145,16 @@ inline Bounds grown(const Bounds& b, float margin)
     return {b.min - vec3(margin), b.max + vec3(margin)};
 }
 
-// The cells each object's box, grown by `margin`, overlaps (07.3), and how many references they make
+// The cells each object's box, grown by its margin, overlaps (07.3), and how many references they make
 // in all: counted in 64 bits before anything is allocated.
 inline long long object_cell_ranges(const GridShape& shape, const Objects& objects, const std::vector<std::uint32_t>& ids,
-                                    float margin, std::vector<CellRange>& ranges)
+                                    const Margins& margins, std::vector<CellRange>& ranges)
 {
     ranges.resize(ids.size());
     long long references = 0;
     for (std::size_t i = 0; i < ids.size(); ++i) {
-        ranges[i] = cells_overlapping(shape, grown(objects.bounds(static_cast<int>(ids[i])), margin));
+        const Bounds box = objects.bounds(static_cast<int>(ids[i]));
+        ranges[i] = cells_overlapping(shape, grown(box, margins.of(box)));
         const cell3 span = ranges[i].last - ranges[i].first + cell3(1);
         references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
     }
@@ -141,15 +175,16 @@ struct GridPlan {
 };
 
 inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::vector<std::uint32_t>& ids, float lambda,
-                          float margin, int max_per_axis)
+                          const Margins& margins, int max_per_axis)
 {
     const int count = static_cast<int>(ids.size());
     GridPlan plan;
     plan.lambda = lambda;
-    // Cells no finer than the margin: a cell smaller than the rounding the margin covers sorts
+    // Cells no finer than the margin at the box's own coordinates (the largest its objects get, and
+    // the one the grid's box grows by): a cell smaller than the rounding the margin covers sorts
     // nothing apart, and each object would be listed in the (margin / cell)^3 cells around it. Only a
-    // scene far from the origin for its size meets this (300 spheres 100 across at 1e7: a margin of
-    // 9.5, and 948 cells per object without it).
+    // scene far from the origin for its size meets this (300 spheres 100 across at 1e7).
+    const float margin = count > 0 ? margins.of(box) : 0.0f;
     const vec3 extent = box.extent();
     const float widest = std::max({extent.x, extent.y, extent.z});
     if (margin > 0.0f && widest / margin < static_cast<float>(max_per_axis))
@@ -157,7 +192,7 @@ inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::
     for (;;) {
         const cell3 n = grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis);
         plan.shape = grid_shape(count > 0 ? grown(box, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
-        plan.references = object_cell_ranges(plan.shape, objects, ids, margin, plan.ranges);
+        plan.references = object_cell_ranges(plan.shape, objects, ids, margins, plan.ranges);
         if (n == cell3(1) || grid_pays(plan.shape, plan.references, count))
             return plan;
         if (plan.asked_references == 0) {
@@ -229,10 +264,9 @@ inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, float
                               const char* structure)
 {
     const int count = objects.size();
-    const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
-    const GridPlan plan = plan_grid(scene, objects, all, lambda, margin, max_per_axis);
+    const GridPlan plan = plan_grid(scene, objects, all, lambda, margins_of(scene), max_per_axis);
     say_lambda_lowered(structure, plan, lambda, count);
     return plan;
 }

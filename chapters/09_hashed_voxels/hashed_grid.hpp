@@ -277,10 +277,10 @@ private:
                                       table_size_for(table_size, occ));
         };
         const std::size_t peak = peak_of(plan, occupied);
-        const float margin = count > 0 ? grid_margin_of(scene) : 0.0f;
+        const Margins margins = margins_of(scene);
         std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
         std::iota(all.begin(), all.end(), 0u);
-        const GridPlan dense_plan = plan_grid(scene, objects, all, dense_grid_lambda, margin, max_cells_per_axis);
+        const GridPlan dense_plan = plan_grid(scene, objects, all, dense_grid_lambda, margins, max_cells_per_axis);
         const std::size_t dense = dense_build_bytes(count, dense_plan.references, dense_plan.shape.cell_count());
         const double within = hashed_memory_factor * static_cast<double>(dense);
         const double budget = std::max(hashed_memory_floor, within);
@@ -293,7 +293,7 @@ private:
         float l = plan.lambda;
         for (int halvings = 0; halvings < 40 && under_within.lambda == 0.0f; ++halvings) {
             l *= 0.5f;
-            const GridPlan coarser = plan_grid(scene, objects, all, l, margin, max_hashed_cells_per_axis);
+            const GridPlan coarser = plan_grid(scene, objects, all, l, margins, max_hashed_cells_per_axis);
             OccupancyBits bits;
             const std::size_t p = peak_of(coarser, set_bits(coarser.shape, coarser.ranges, bits));
             if (under_budget.lambda == 0.0f && static_cast<double>(p) <= budget)

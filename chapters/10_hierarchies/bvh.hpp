@@ -88,13 +88,16 @@ private:
         const int n = objects.size();
         boxes_.resize(static_cast<std::size_t>(n));
         centres_.resize(static_cast<std::size_t>(n));
-        // Each box grown by chapter 07's margin (grid_margin_of): a hit's t carries its test's
-        // rounding, which can put the hit point a little outside the object's own box (a ray leaving
-        // a plane at a grazing angle, a triangle far larger than its distance from the ray's origin);
-        // brute force reports such a hit, and the BVH must find it too.
-        const float margin = n > 0 ? grid_margin_of(bounds_of_all(objects)) : 0.0f;
+        // Each box grown by its margin (chapter 07's Margins, grid.hpp, which derives it): a hit's t
+        // carries its test's rounding, which can put the hit point a little outside the object's own
+        // box (a ray leaving a plane at a grazing angle, a triangle far larger than its distance from
+        // the ray's origin); brute force reports such a hit, and the BVH must find it too. The
+        // margin follows the rounding of the object's coordinates and of the rays' origins, so a
+        // small object near the origin keeps a small box beside a far one.
+        const Margins margins = margins_of(bounds_of_all(objects));
         for (int k = 0; k < n; ++k) {
-            boxes_[k] = grown(objects.bounds(k), margin);
+            const Bounds box = objects.bounds(k);
+            boxes_[k] = grown(box, margins.of(box));
             centres_[k] = boxes_[k].centre();
         }
         bvh_.object_index.resize(static_cast<std::size_t>(n));

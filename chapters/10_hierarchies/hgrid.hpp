@@ -42,8 +42,8 @@ public:
         const Timer timer;
         h_.grids.push_back({build_grid(objects, settings.lambda), {}});
         h_.grids[0].child.assign(static_cast<std::size_t>(h_.grids[0].grid.shape.cell_count()), -1);
-        // The margin is the root's (build_grid's), at every level.
-        margin_ = objects.size() > 0 ? grid_margin_of(bounds_of_all(objects)) : 0.0f;
+        // The margins are the root's (build_grid's), at every level: each object's own.
+        margins_ = margins_of(bounds_of_all(objects));
         cells_ = h_.grids[0].grid.shape.cell_count();
         references_ = static_cast<long long>(h_.grids[0].grid.object_index.size());
         subdivide(objects, 0, 0);
@@ -119,11 +119,12 @@ private:
             const cell3 n = grid_resolution(resolution_box(cell), count, settings_.lambda);
             if (n == cell3(1))
                 continue;  // one cell again: nothing gained
-            const GridShape child_shape = grid_shape(grown(cell, margin_), n);
+            // Grown by the margin an object at the cell's coordinates gets: their rounding.
+            const GridShape child_shape = grid_shape(grown(cell, margins_.of(cell)), n);
             const std::vector<std::uint32_t> ids(h_.grids[g].grid.object_index.begin() + begin,
                                                  h_.grids[g].grid.object_index.begin() + end);
             std::vector<CellRange> ranges;
-            const long long references = object_cell_ranges(child_shape, objects, ids, margin_, ranges);
+            const long long references = object_cell_ranges(child_shape, objects, ids, margins_, ranges);
             if (!separates(child_shape, references, ids.size()))
                 continue;
             // Past the budgets of chapter 07's grid, counted over every level, the cell keeps its list:
@@ -200,7 +201,7 @@ private:
     HGridSettings settings_;
     HGrid h_;
     HGridStats stats_;
-    float margin_ = 0.0f;
+    Margins margins_;
     long long cells_ = 0, references_ = 0;  // over every level, for the budgets
 };
 

@@ -23,8 +23,8 @@ struct Held {
 };
 
 // Checks node n and everything under it; returns what it holds, counting each object's leaves in
-// `seen`. `margin`: chapter 07's margin for the scene, by which the build grows each object's box.
-Held check_node(const Objects& objects, float margin, const Bvh& bvh, std::uint32_t n, std::map<std::uint32_t, int>& seen)
+// `seen`. `margins`: chapter 07's margins for the scene, by which the build grows each object's box.
+Held check_node(const Objects& objects, const Margins& margins, const Bvh& bvh, std::uint32_t n, std::map<std::uint32_t, int>& seen)
 {
     const BvhNode& node = bvh.nodes[n];
     INFO("node " << n << " of " << bvh.nodes.size() << ": " << show(node.bounds()));
@@ -34,7 +34,8 @@ Held check_node(const Objects& objects, float margin, const Bvh& bvh, std::uint3
         for (std::uint32_t j = node.first; j < node.first + node.count; ++j) {
             INFO("its object " << bvh.object_index[j]);
             REQUIRE(bvh.object_index[j] < static_cast<std::uint32_t>(objects.size()));
-            const Bounds box = grown(objects.bounds(static_cast<int>(bvh.object_index[j])), margin);
+            const Bounds own = objects.bounds(static_cast<int>(bvh.object_index[j]));
+            const Bounds box = grown(own, margins.of(own));
             held.box.grow(box);
             held.centres.grow(box.centre());
             ++seen[bvh.object_index[j]];
@@ -42,8 +43,8 @@ Held check_node(const Objects& objects, float margin, const Bvh& bvh, std::uint3
     } else {
         REQUIRE(node.first > n + 1);
         REQUIRE(node.first < bvh.nodes.size());
-        const Held first = check_node(objects, margin, bvh, n + 1, seen);
-        const Held second = check_node(objects, margin, bvh, node.first, seen);
+        const Held first = check_node(objects, margins, bvh, n + 1, seen);
+        const Held second = check_node(objects, margins, bvh, node.first, seen);
         for (const Held& child : {first, second}) {
             held.box.grow(child.box);
             held.centres.grow(child.centres);
@@ -92,7 +93,7 @@ TEST_CASE("the BVH's build: each box is the box around what it holds, and every 
             const Objects objects = objects_of(scene, lit_tests);  // reads the scene's arrays
             const BvhAccel bvh(objects, setting.settings);
             std::map<std::uint32_t, int> seen;
-                        check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+                        check_node(objects, margins_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
             INFO("depth " << bvh.stats().depth << ", limit " << setting.settings.max_depth);
             CHECK(bvh.stats().depth <= setting.settings.max_depth);
             CHECK(static_cast<int>(seen.size()) == objects.size());
@@ -156,7 +157,7 @@ TEST_CASE("more objects at one centre than a leaf can count are halved, each obj
     const Objects objects = objects_of(scene, lit_tests);
     const BvhAccel bvh(objects);
     std::map<std::uint32_t, int> seen;
-    check_node(objects, grid_margin_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+    check_node(objects, margins_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
     CHECK(static_cast<int>(seen.size()) == objects.size());
     INFO(bvh.stats().nodes << " nodes, " << bvh.stats().leaves << " leaves");
     CHECK(bvh.stats().leaves >= 2);
