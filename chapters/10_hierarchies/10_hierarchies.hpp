@@ -202,8 +202,9 @@ struct HGrid {
 //  - Each cell visited counts once (count(Counter::cells_visited)), at every level, a cell holding
 //    a grid included.
 // Returns whether best changed. The root's walk is hgrid_closest(h, 0, ray, range, range, objects,
-// best). A child grid's box is its cell's box grown by the margin the objects' boxes grow by
-// (grid.hpp), so the part of the ray inside the cell always lies within it.
+// best). A child grid's box is its cell's box grown by the margin an object at the cell's
+// coordinates would get (grid.hpp's Margins), so the part of the ray inside the cell always lies
+// within it.
 // The lesson's section "The hierarchy of grids (EXERCISE 10.5)" derives it.
 // Example: a root of two cells along x over (0, -1, -1) to (5, 3, 2), its cell 0 (x up to 2.5)
 // holding a grid of two cells that lists object 1, a sphere of radius 0.2 at (1.5, 0.5, 0.5): the

@@ -207,10 +207,11 @@ inline std::vector<int> objects_hit(const Ray& ray, Interval range, const Object
 }
 
 // 07.3 (with 07.2 at the corners) for the objects the ray hits: false when one breaks its promise.
-inline bool check_lists(Diagnosis& d, const GridShape& g, const Ray& ray, Interval range, const Objects& objects, float margin)
+inline bool check_lists(Diagnosis& d, const GridShape& g, const Ray& ray, Interval range, const Objects& objects,
+                        const Margins& margins)
 {
     for (const int k : objects_hit(ray, range, objects)) {
-        const Bounds box = grown(objects.bounds(k), margin);
+        const Bounds box = grown(objects.bounds(k), margins.of(objects.bounds(k)));
         d.check("07.3", "cells_overlapping");
         const CellRange got = cells_overlapping(g, box);
         const cell3 first = cell_promised(g, box.min), last = cell_promised(g, box.max);
@@ -290,7 +291,7 @@ inline std::string diagnose_grid(const UniformGrid& grid, const Ray& ray, Interv
     d.exercised = "07.1-07.6 (07.1 the resolution, 07.2-07.3 the lists, 07.4-07.5 the walk, 07.6 the cell's query)";
     const Grid& g = grid.grid();
     const GridShape& shape = g.shape;
-    if (!check_lists(d, shape, ray, range, objects, grid_margin_of(bounds_of_all(objects))))
+    if (!check_lists(d, shape, ray, range, objects, margins_of(bounds_of_all(objects))))
         return d.text();
     bool missed = false;
     std::optional<GridWalk> w = check_start(d, shape, ray, range, missed);
