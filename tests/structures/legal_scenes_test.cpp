@@ -413,9 +413,9 @@ TEST_CASE("copies of a sliver whose float t lies beyond its bound's reach tie to
 
 TEST_CASE("a dense cluster beside one far sphere costs every structure no more than brute force, the BVH under a tenth", "[structures]")
 {
-    // 100,000 spheres of radius 2e-4 in a box 0.01 across, and one sphere 1000 away. Once each box
-    // grew by 1e-5 of the scene's extent (0.01, wider than the cluster): no cell or node sorted the
-    // cluster apart, and every structure tested about twice brute force's objects.
+    // 100,000 spheres of radius 2e-4 in a box 0.01 across, and one sphere 1000 away. A margin of
+    // 1e-5 of the scene's extent would be 0.01, wider than the cluster: no cell or node could sort
+    // it apart, and every structure would test about twice brute force's objects.
     LitScene cluster = with_material();
     Rng rng(43, 0);
     for (int k = 0; k < 100000; ++k) {
@@ -436,8 +436,9 @@ TEST_CASE("a dense cluster beside one far sphere costs every structure no more t
 
 TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hierarchy of grids no more than brute force", "[structures]")
 {
-    // Once each box grew by 1e-5 of the scene's extent (2, against triangles 1e-3 across), and the
-    // hierarchy of grids tested 4.4 times brute force's objects.
+    // A margin of 1e-5 of the scene's extent would be 2 here, against triangles 1e-3 across: the
+    // hierarchy of grids would list each small triangle in many cells and test 4.4 times brute force's
+    // objects.
     LitScene huge = with_material();
     huge.add_triangle({{-1e5f, -1, -1e5f}, {0, -1, 1e5f}, {1e5f, -1, -1e5f}}, 0);
     Rng rng(44, 0);
