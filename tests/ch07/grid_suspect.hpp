@@ -227,41 +227,6 @@ inline bool check_lists(Diagnosis& d, const GridShape& g, const Ray& ray, Interv
     return true;
 }
 
-// 07.1's promise: the cube-root rule over the axes wider than the side, the others 1, in float as
-// the contract's steps say (a student's count is held to it within one cell an axis).
-inline cell3 resolution_promised(const Bounds& box, int objects, float lambda, int max_per_axis = max_cells_per_axis)
-{
-    if (objects <= 0 || box.empty())
-        return {1, 1, 1};
-    const vec3 e = box.extent();
-    bool cut[3] = {e.x > 0.0f, e.y > 0.0f, e.z > 0.0f};
-    for (;;) {
-        int dims = 0;
-        float volume = 1.0f;
-        for (int a = 0; a < 3; ++a)
-            if (cut[a]) {
-                ++dims;
-                volume *= e[a];
-            }
-        if (dims == 0)
-            return {1, 1, 1};
-        const float side = std::pow(volume / (lambda * static_cast<float>(objects)), 1.0f / static_cast<float>(dims));
-        bool dropped = false;
-        for (int a = 0; a < 3; ++a)
-            if (cut[a] && e[a] <= side) {
-                cut[a] = false;
-                dropped = true;
-            }
-        if (dropped)
-            continue;
-        cell3 n(1);
-        for (int a = 0; a < 3; ++a)
-            if (cut[a])
-                n[a] = static_cast<int>(std::clamp(std::round(e[a] / side), 1.0f, static_cast<float>(max_per_axis)));
-        return n;
-    }
-}
-
 // Chapter 07's diagnosis of a grid whose build failed (it asked for too many cells): 07.1 on the
 // box and count the build gives it.
 inline std::string diagnose_grid_build(const Objects& objects, float lambda)
@@ -272,13 +237,16 @@ inline std::string diagnose_grid_build(const Objects& objects, float lambda)
     d.check("07.1", "grid_resolution");
     const Bounds box = resolution_box(bounds_of_all(objects));
     const cell3 got = grid_resolution(box, objects.size(), lambda);
-    const cell3 want = resolution_promised(box, objects.size(), lambda);
-    const cell3 off = glm::abs(got - want);
-    if (off.x > 1 || off.y > 1 || off.z > 1) {
+    // 07.1's promise as a bound: a cut axis is wider than s and gets round(extent / s) cells, at most
+    // 1.5 extent / s, so the cut axes hold at most 1.5^3 lambda N cells, the others 1 each.
+    const double cells = static_cast<double>(got.x) * got.y * got.z;
+    const double most = 3.375 * static_cast<double>(lambda) * objects.size() + 1.0;
+    if (!(cells <= most)) {
         std::ostringstream s;
         s.precision(9);
         s << "for " << show(box) << ", " << objects.size() << " objects at lambda " << lambda << " it returned " << show(got)
-          << " cells; its contract promises about " << show(want) << " (cells of one side s, lambda N of them over the axes wider than s)";
+          << " cells, " << cells << " in all; its contract promises about lambda N = " << lambda * objects.size()
+          << " (each axis wider than s rounds extent / s, so never more than " << most << ")";
         d.fail("07.1", "grid_resolution", s.str());
     }
     return d.text();
