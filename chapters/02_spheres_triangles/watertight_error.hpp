@@ -102,13 +102,11 @@ T watertight_t_error(const BasicRay<T>& ray, const BasicTriangle<T>& tri)
 // Where the float bound cannot decide (a hit nearer than the test's own rounding of t, which grows
 // with the corners' distance from the origin: a floor 1e7 across seen from 1 above it), the test is
 // taken again in double, whose rounding is 2^29 times finer. Its hit is certainly in front of the
-// ray when it lies beyond both its own bound and the slab the origin's float rounding leaves across
-// the plane (a few ulps of its largest coordinate); nearer, it is the surface the ray leaves, or
-// nothing that can be told from it. The hit goes to `out` as float, as the float test gives it. No
-// range is asked: the caller applies its range to this answer (bounded_answer). Rare, so kept out
-// of the callers' loops, and answered through a reference: returned as an optional, it made GCC 12
-// build every test's result in memory (shape_tests.hpp), 22% more instructions in chapter 04's
-// render loop.
+// ray when it lies beyond both its own bound and the slab the origin's rounding leaves across the
+// plane; nearer, it is the surface the ray leaves, or nothing that can be told from it. The hit goes
+// to `out` as float, as the float test gives it. No range is asked: the caller applies its range to
+// this answer (bounded_answer). Rare, so kept out of the callers' loops, and answered through a
+// reference (the GCC 12 stall that shape_tests.hpp's hit_triangle_bounded describes).
 #if defined(__GNUC__)
 [[gnu::cold, gnu::noinline]]
 #endif
@@ -120,30 +118,39 @@ inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, 
         hit_triangle_watertight(r, t, BasicInterval<double>{0.0, std::numeric_limits<double>::infinity()});
     if (!hit)
         return false;
-    // The origin's own rounding: origin_ulps float steps of its largest coordinate, crossed at the
-    // rate the ray approaches the plane.
+    // The origin's own rounding, where it was computed (a point moved off a surface): origin_ulps
+    // float steps of each coordinate. Only the part along the plane's normal moves the origin across
+    // the plane: a step of x moves it by n_x times that step. So an eye 1 above a floor at y = 0 is
+    // 1 from it whatever its x, 4e6 or 0; sized on the largest coordinate instead, the slab was 1.9
+    // there and refused the floor. The distance across the plane is t times the rate the ray
+    // approaches it.
     constexpr double origin_ulps = 4.0;
-    const glm::dvec3 n = glm::cross(t.b - t.a, t.c - t.a);
-    const double approach = std::abs(glm::dot(n, r.dir)) / glm::length(n);
-    const glm::dvec3 o = glm::abs(r.origin);
-    const double slab = origin_ulps * std::numeric_limits<float>::epsilon() * std::max(o.x, std::max(o.y, o.z));
+    const glm::dvec3 n = glm::normalize(glm::cross(t.b - t.a, t.c - t.a));
+    const double approach = std::abs(glm::dot(n, r.dir));
+    const double slab = origin_ulps * std::numeric_limits<float>::epsilon() * glm::dot(glm::abs(n), glm::abs(r.origin));
     if (!(hit->t > watertight_t_error(r, t)) || !(hit->t * approach > slab))
         return false;
     out = {static_cast<float>(hit->t), static_cast<float>(hit->beta), static_cast<float>(hit->gamma)};
     return true;
 }
 
-// The bounded test's answer for a hit the float test found: its own t where that lies beyond the
-// bound, else double's decision. The answer depends on the ray and the triangle alone, never on a
-// range: a query applies its range to the answer, not to the float t, or two copies of one triangle
-// asked in two ranges (the tie rule, closer_than) could answer differently, the float t outside the
-// nearer range and double's t inside it.
+// The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
+// its origin too: its own t where that lies beyond the bound; nothing where it lies more than the
+// bound behind; in between, double's decision. A float t of -0 or a little below can belong to a
+// surface certainly in front (a floor 1e9 across seen from 1e-3 above: its t rounds by more than
+// the eye's height), so the band is asked around 0 on both sides. The answer depends on the ray and
+// the triangle alone, never on a range: a query applies its range to the answer, not to the float
+// t, or two copies of one triangle asked in two ranges (the tie rule, closer_than) could answer
+// differently, the float t outside the nearer range and double's t inside it.
 inline bool bounded_answer(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, TriangleHit<float>& out)
 {
-    if (hit.t > watertight_t_error(ray, tri)) {
+    const float bound = watertight_t_error(ray, tri);
+    if (hit.t > bound) {
         out = hit;
         return true;
     }
+    if (hit.t < -bound)
+        return false;
     return hit_triangle_decided_in_double(ray, tri, out);
 }
 

@@ -254,9 +254,10 @@ private:
     // for the watertight test, else (or with 10.6's stub) one by one.
     bool block(const FourTriangles& g, std::uint32_t n)
     {
-        // Bounded, every lane hit beyond range.min: a lane's answer may come nearer than its float t.
-        const FourHits h = four_wide_ ? hit_four_triangles(g, frame_, Interval{range_.min, bounded_ ? infinity : reach_.max})
-                                      : FourHits::not_tested();
+        // Bounded, every lane hit along the whole line, as hit_triangle_bounded asks: a lane's
+        // answer may lie in the range when its float t does not (bounded_answer).
+        const Interval asked = bounded_ ? Interval{-infinity, infinity} : Interval{range_.min, reach_.max};
+        const FourHits h = four_wide_ ? hit_four_triangles(g, frame_, asked) : FourHits::not_tested();
         if (!h.tested) {
             for (std::uint32_t i = 0; i < n; ++i)
                 if (ask(g.object[i]))
