@@ -13,18 +13,37 @@ namespace rt {
 
 namespace {
 
-// A float read from a decimal number is off by up to half a unit in its last place, 2^-24 of its
-// size; differences and products of such numbers carry a few more roundings. A distance below
-// this many roundings of the polygon's largest coordinate is rounding noise, not geometry: two
-// vertices that close are one vertex, a vertex that close to a line lies on it.
+// The corners are floats, exact as read: the polygon is the one they give. Every distance below is
+// worked out in double from them, each step rounding by at most 2^-53 of the magnitudes it combines
+// (the standard model: pbrt-v4 sec. 6.8.1). A distance below this many such roundings of the
+// polygon's largest coordinate is what those computations cannot tell from 0: two vertices that
+// close are one vertex, a vertex that close to another edge touches it. Sized on double's rounding,
+// not float's: two distinct float corners are at least a float step apart, 2^29 times more, so a
+// mesh finer than float's steps at its distance from the origin (a ball 0.1 across at x = 1000,
+// triangles 1e-5 across at 10) keeps every corner and every triangle.
 constexpr double noise_roundings = 16.0;
-constexpr double float_rounding = 0x1p-24;
+constexpr double double_rounding = 0x1p-53;
 
-// A vertex meant to lie on a line, read as floats, lies within a rounding or two of it. Within this
-// many roundings of an ear's border, a vertex counts as on it and keeps the ear from being cut (a
-// vertex on the new edge would leave a T-junction). Far fewer than noise_roundings: a vertex a
-// little more off the new edge of a long thin ear is really outside, and must not block the ear.
+// What the file meant, which float only approximates: a float read from a decimal number is off by
+// up to half a unit in its last place, 2^-24 of its size, and a polygon off the coordinate planes
+// is projected onto one, off by a few more. A vertex meant to lie on the line between its
+// neighbours lies within a few such roundings of it; within straight_roundings, the ear clipper
+// keeps it as a corner of later triangles instead of cutting it off as a sliver whose winding the
+// rounding decides. Within touch_roundings of an ear's border, a vertex counts as on it and keeps
+// the ear from being cut (a vertex on the new edge would leave a T-junction); far fewer, since a
+// vertex a little more off the new edge of a long thin ear is really outside. Both are preferences:
+// where they leave no ear to cut (a polygon not much larger than these roundings), the clipper
+// drops them and decides on the float corners as they are.
+constexpr double float_rounding = 0x1p-24;
+constexpr double straight_roundings = 16.0;
 constexpr double touch_roundings = 2.0;
+
+// The area vector's rounding: each corner's difference from the first rounds once by 2^-53 of
+// itself, each product of two such differences once more, and the sum of two products and of the
+// n - 2 cross products once a step: at most n + 2 roundings of the sum of the products' magnitudes
+// (pbrt-v4 sec. 6.8.1's gamma(n)). An area vector no longer than that bound is one double cannot
+// tell from 0: the polygon has no area. Above it the polygon is kept, however small or far out.
+double gamma_double(std::size_t n) { return n * double_rounding / (1.0 - n * double_rounding); }
 
 // NFF polygons are planar; files printed with C's "%g" keep six significant digits, a relative
 // rounding of up to 5e-6 of each coordinate. A vertex farther from the polygon's plane than 1% of
@@ -56,8 +75,9 @@ std::string vertex_name(std::size_t index) { return "vertex " + std::to_string(i
 struct Outline {
     std::vector<dvec2> q;
     std::vector<std::size_t> original;
-    double noise = 0.0;  // distances up to this are rounding noise (see noise_roundings)
-    double touch = 0.0;  // a vertex this close to an ear's border is on it (see touch_roundings)
+    double noise = 0.0;     // distances up to this are 0 (see noise_roundings)
+    double straight = 0.0;  // a vertex this close to its neighbours' line is on it (see straight_roundings)
+    double touch = 0.0;     // a vertex this close to an ear's border is on it (see touch_roundings)
 };
 
 // Projects onto the coordinate plane most nearly parallel to the polygon (drops the normal's largest
@@ -151,8 +171,9 @@ public:
                 continue;
             // A full turn found no ear. In exact arithmetic a simple polygon always has one; here,
             // first look again with fresh statuses (in case rounding left one stale), then drop the
-            // tolerances: corners within noise of straight may be ears, and vertices within a
-            // rounding of an ear's border no longer block it (thin triangles, but triangles).
+            // preferences: corners within straight_roundings of straight may be ears, and vertices
+            // within touch_roundings of an ear's border no longer block it (thin triangles, but
+            // triangles).
             without_progress = 0;
             if (!reclassified) {
                 reclassified = true;
@@ -162,11 +183,14 @@ public:
                 touch_ = 0.0;
                 classify_all(cur);
             } else {
-                // What is left is no wider than rounding noise (the final area check measures it),
-                // or the polygon's edges touch.
+                // What is left is no wider than noise (the final area check measures it), or the
+                // polygon's edges touch.
                 return triangles;
             }
         }
+        // The last three corners are a triangle unless exactly straight: nothing is left to keep
+        // a nearly straight corner for.
+        straight_tolerance_ = 0.0;
         if (classify_kind(cur) == Kind::convex)
             triangles.push_back({f_.original[prev_[cur]], f_.original[cur], f_.original[next_[cur]]});
         return triangles;
@@ -255,7 +279,7 @@ private:
     std::vector<std::size_t> prev_, next_;
     std::vector<Kind> kind_;
     std::vector<bool> ear_;
-    double straight_tolerance_ = f_.noise;
+    double straight_tolerance_ = f_.straight;
     double touch_ = f_.touch;
 };
 
@@ -282,7 +306,7 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
         throw InputError("has " + std::to_string(n) + " vertices; the reader takes at most " +
                          std::to_string(polygon_max_vertices));
 
-    // The polygon's size and how far rounding can move its vertices.
+    // The polygon's size and what double cannot tell from 0 at its coordinates.
     dvec3 lo(vertices[0]), hi(vertices[0]);
     for (const point3& v : vertices) {
         lo = glm::min(lo, dvec3(v));
@@ -290,7 +314,7 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
     }
     const double size = glm::length(hi - lo);
     const double magnitude = std::max(glm::length(lo), glm::length(hi));
-    const double noise = noise_roundings * float_rounding * magnitude;
+    const double noise = noise_roundings * double_rounding * magnitude;
 
     // Repeated vertices (a polygon closed by repeating its first vertex, say) are one vertex.
     std::vector<std::size_t> kept;
@@ -300,19 +324,31 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
     while (kept.size() > 1 && glm::length(dvec3(vertices[kept.back()]) - dvec3(vertices[kept.front()])) <= noise)
         kept.pop_back();
     if (kept.size() < 3)
-        throw DegeneratePolygon("has fewer than 3 distinct vertices");
+        throw DegeneratePolygon("has fewer than 3 distinct vertices (its corners coincide)");
 
     std::vector<point3> distinct;
     for (const std::size_t i : kept)
         distinct.push_back(vertices[i]);
     const dvec3 area_vector = polygon_area_vector(distinct);
     const double area = 0.5 * glm::length(area_vector);
+    // The area vector's rounding (gamma_double above), and the fan's areas without their signs.
+    dvec3 products(0.0);
+    double unsigned_area = 0.0;
+    for (std::size_t k = 1; k + 1 < distinct.size(); ++k) {
+        const dvec3 u = dvec3(distinct[k]) - dvec3(distinct[0]), v = dvec3(distinct[k + 1]) - dvec3(distinct[0]);
+        const dvec3 au = glm::abs(u), av = glm::abs(v);
+        products += dvec3(au.y * av.z + au.z * av.y, au.z * av.x + au.x * av.z, au.x * av.y + au.y * av.x);
+        unsigned_area += 0.5 * glm::length(glm::cross(u, v));
+    }
+    const double rounding = 0.5 * gamma_double(distinct.size() + 2) * glm::length(products);
+    if (!(area > rounding)) {
+        if (!(unsigned_area > rounding))
+            throw DegeneratePolygon("its vertices all lie on one line (no area)");
+        throw DegeneratePolygon("its parts wind opposite ways and their areas cancel (a bowtie: no area)");
+    }
     double perimeter = 0.0;
     for (std::size_t k = 0; k < distinct.size(); ++k)
         perimeter += glm::length(dvec3(distinct[(k + 1) % distinct.size()]) - dvec3(distinct[k]));
-    // Vertices within noise of one line enclose at most a band of that width along the edges.
-    if (!(area > noise * perimeter))
-        throw DegeneratePolygon("its vertices all lie on one line (no area)");
     const dvec3 normal = area_vector / (2.0 * area);
 
     // Planar: every vertex near the plane through the vertices' centroid.
@@ -332,6 +368,7 @@ PolygonTriangles triangulate_polygon(const std::vector<point3>& vertices)
 
     Outline outline;
     outline.noise = noise;
+    outline.straight = straight_roundings * float_rounding * magnitude;
     outline.touch = touch_roundings * float_rounding * magnitude;
     outline.original = kept;
     const dvec3 a = glm::abs(normal);

@@ -215,7 +215,7 @@ TEST_CASE("a polygon or patch with no area is skipped with a warning naming its 
     CHECK(s.skipped_polygons == 2);
     REQUIRE(s.warnings.size() == 2);
     CHECK(s.warnings[0] == "t.nff:10: polygon: its vertices all lie on one line (no area): skipped");
-    CHECK(s.warnings[1] == "t.nff:14: patch: has fewer than 3 distinct vertices: skipped");
+    CHECK(s.warnings[1] == "t.nff:14: patch: has fewer than 3 distinct vertices (its corners coincide): skipped");
     CHECK_THROWS_WITH(parse(lit + "p 3\n0 0 0\n1 1 1\n2 2 2\n"), "t.nff:13: no objects (s, p, pp or c): nothing to render");
 }
 

@@ -262,8 +262,8 @@ TEST_CASE("polygons that are not polygons are refused with the reason", "[common
     const std::vector<Case> cases = {
         {{{0, 0, 0}, {1, 0, 0}}, "needs at least 3 vertices, got 2"},
         {{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {-1, -1, -1}}, "its vertices all lie on one line (no area)"},
-        {{{5, 5, 5}, {5, 5, 5}, {5, 5, 5}}, "has fewer than 3 distinct vertices"},
-        {{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, "has fewer than 3 distinct vertices"},
+        {{{5, 5, 5}, {5, 5, 5}, {5, 5, 5}}, "has fewer than 3 distinct vertices (its corners coincide)"},
+        {{{0, 0, 0}, {1, 0, 0}, {0, 0, 0}}, "has fewer than 3 distinct vertices (its corners coincide)"},
         {{{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 1, 0}}, "edges 1 and 3 cross (NFF polygons are simple)"},
         {{{0, 0, 0}, {4, 0, 0}, {4, 3, 0}, {5, 1, 0}, {3, 1, 0}, {3, 4, 0}, {0, 4, 0}},
          "edges 2 and 4 cross (NFF polygons are simple)"},
@@ -282,4 +282,62 @@ TEST_CASE("polygons that are not polygons are refused with the reason", "[common
     }
     CHECK_THROWS_WITH(triangulate_polygon(std::vector<point3>(polygon_max_vertices + 1, point3(0.0f))),
                       "has 10001 vertices; the reader takes at most 10000");
+}
+
+TEST_CASE("triangles far finer than float's steps at their distance from the origin are all kept", "[common]")
+{
+    // 2,000 triangles 1e-5 across at coordinates up to 10, where floats are 1e-6 apart: a tolerance
+    // of 16 float steps of the farthest corner, once used as a width, called 1,993 of them lines.
+    Rng rng(52, 0);
+    int lost = 0;
+    std::string first;
+    for (int k = 0; k < 2000; ++k) {
+        const point3 at(20 * rng.next_float() - 10, 20 * rng.next_float() - 10, 20 * rng.next_float() - 10);
+        std::vector<point3> corners;
+        for (int c = 0; c < 3; ++c)
+            corners.push_back(at + 1e-5f * vec3(rng.next_float(), rng.next_float(), rng.next_float()));
+        // Float corners that are distinct and not on one line, in double: a triangle with area.
+        const dvec3 area_vector = glm::cross(dvec3(corners[1]) - dvec3(corners[0]), dvec3(corners[2]) - dvec3(corners[0]));
+        if (glm::length(area_vector) == 0.0)
+            continue;
+        try {
+            const PolygonTriangles cut = triangulate_polygon(corners);
+            if (cut.triangles.size() != 1 && lost++ == 0)
+                first = "cut into " + std::to_string(cut.triangles.size()) + " triangles";
+        } catch (const InputError& e) {
+            if (lost++ == 0)
+                first = "(" + grader::show(corners[0]) + ", " + grader::show(corners[1]) + ", " +
+                        grader::show(corners[2]) + ") " + e.what();
+        }
+    }
+    INFO(lost << " of 2000 triangles lost; the first: " << first);
+    CHECK(lost == 0);
+}
+
+TEST_CASE("a fine polygon far from the origin is cut as the same polygon at the origin is", "[common]")
+{
+    // The comb 1.1e-3 across (its teeth 1e-4 wide), at the origin and 1e2 and 1e3 out along x: at
+    // 1e3 floats are 6e-5 apart, more than half a tooth, and a tolerance of 16 of them made every
+    // corner one. (At 1e4, where they are 1e-3 apart, the float teeth do touch.)
+    for (const double out : {0.0, 1e2, 1e3}) {
+        Frame frame;
+        frame.origin = dvec3(out, 0.0, 0.0);
+        std::vector<dvec2> outline = comb(6);
+        for (dvec2& q : outline)
+            q *= 1e-4;
+        INFO("the comb 1.1e-3 across at x = " << out);
+        check_covers_exactly(outline, frame, 6);
+    }
+}
+
+TEST_CASE("a polygon of no area is skipped with its cause: coincident corners, one line, a bowtie", "[common]")
+{
+    CHECK_THROWS_WITH(triangulate_polygon({{1e3f, 2, 3}, {1e3f, 2, 3}, {1e3f, 2, 3}}),
+                      "has fewer than 3 distinct vertices (its corners coincide)");
+    CHECK_THROWS_WITH(triangulate_polygon({{1e3f, 2, 3}, {1e3f + 0.25f, 2.5f, 3}, {1e3f + 0.5f, 3, 3}}),
+                      "its vertices all lie on one line (no area)");
+    // A bowtie whose two halves wind opposite ways and cancel: refused as no area, not as a line.
+    CHECK_THROWS_WITH(triangulate_polygon({{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 2, 0}}),
+                      "its parts wind opposite ways and their areas cancel (a bowtie: no area)");
+    CHECK_THROWS_AS(triangulate_polygon({{0, 0, 0}, {2, 2, 0}, {2, 0, 0}, {0, 2, 0}}), DegeneratePolygon);
 }
