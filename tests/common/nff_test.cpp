@@ -382,3 +382,47 @@ TEST_CASE("an NFF view whose from is 1e-29 from at is a view, and the same point
     CHECK_THROWS_WITH(parse(replace_all(lit, "at 0 0 0", "at 0 0 5") + "s 0 0 -3 1\n"),
                       "t.nff:3: view: from and at are the same point (no view direction)");
 }
+
+TEST_CASE("a tessellated ball 0.1 across is read whole at the origin and 1e3 and 1e5 from it", "[common]")
+{
+    // 19,800 triangles 3e-3 to 6e-3 across. A tolerance of 16 float steps of the farthest corner,
+    // once used as a width, skipped every one at x = 1e3. At 1e5 floats are 0.0078 apart along x,
+    // more than a triangle, so a triangle is skipped only where its float corners truly have no area.
+    for (const double out : {0.0, 1e3, 1e5}) {
+        std::ostringstream text;
+        text << view_lines << "l 1 1 1\nf 1 0 0 1 0 0 0 0\n";
+        text.precision(9);
+        const int around = 100, down = 100;
+        const auto corner = [&](int i, int j) {
+            const double theta = 3.14159265358979 * j / down, phi = 6.28318530717959 * i / around;
+            return dvec3(out + 0.05 * std::sin(theta) * std::cos(phi), 0.05 * std::cos(theta),
+                         0.05 * std::sin(theta) * std::sin(phi));
+        };
+        int written = 0, without_area = 0;
+        const auto triangle = [&](const dvec3& a, const dvec3& b, const dvec3& c) {
+            text << "p 3\n" << a.x << ' ' << a.y << ' ' << a.z << '\n' << b.x << ' ' << b.y << ' ' << b.z << '\n'
+                 << c.x << ' ' << c.y << ' ' << c.z << '\n';
+            ++written;
+            // The corners as the reader's floats hold them.
+            const dvec3 fa{point3(a)}, fb{point3(b)}, fc{point3(c)};
+            without_area += glm::length(glm::cross(fb - fa, fc - fa)) == 0.0 ? 1 : 0;
+        };
+        for (int j = 0; j < down; ++j)
+            for (int i = 0; i < around; ++i) {
+                const dvec3 a = corner(i, j), b = corner(i + 1, j), c = corner(i + 1, j + 1), d = corner(i, j + 1);
+                if (j > 0)
+                    triangle(a, c, b);
+                if (j < down - 1)
+                    triangle(a, d, c);
+            }
+        const NffScene s = parse(text.str());
+        INFO("the ball at x = " << out << ": " << written << " triangles written, " << without_area
+                                << " without area in float, " << s.triangles.size() << " read, " << s.skipped_polygons
+                                << " skipped");
+        CHECK(written == 19800);
+        CHECK(s.skipped_polygons == without_area);
+        CHECK(s.triangles.size() == static_cast<std::size_t>(written - without_area));
+        if (out < 1e4)
+            CHECK(without_area == 0);
+    }
+}
