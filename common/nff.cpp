@@ -1,6 +1,7 @@
 #include "common/nff.hpp"
 
 #include "common/error.hpp"
+#include "common/float_reach.hpp"
 #include "common/number.hpp"
 #include "common/polygon.hpp"
 #include "common/words.hpp"
@@ -193,6 +194,9 @@ public:
         if (scene_.lights.empty())
             fail(lex_.last_line(), "no lights ('l'): every object would be black");
         warn_if_coarse();
+        const NffView& view = scene_.view;
+        if (const std::string beyond = view_beyond_float(view.from, view.at, view.angle_degrees, view.width); !beyond.empty())
+            scene_.warnings.push_back(name_ + ":" + std::to_string(view.line) + ": " + beyond);
         if (scene_.skipped_polygons > skipped_named)
             scene_.warnings.push_back(name_ + ": " + std::to_string(scene_.skipped_polygons) +
                                       " polygons and patches with no area skipped in all (the first " +
@@ -204,43 +208,21 @@ private:
     // How many skipped polygons the warnings name one by one before they only count them.
     static constexpr int skipped_named = 3;
 
-    // Why 2^14 float steps: a coordinate is rounded to the step between floats at its size (2^-23 to
-    // 2^-24 of it), so a scene far from the origin is drawn on a lattice of that step. Fewer than
-    // 2^14 steps across the scene and its shapes are placed to within 1/16384 of it: round shapes
-    // show facets and stairs, normals and shadows flicker, and an accelerator's cells cannot be finer
-    // than the rounding (chapter 07's margin). Said once, as the reader's warnings are.
+    // The scene as float holds it (common/float_reach.hpp): a lattice too coarse for the scene, or
+    // objects finer than a feeler's offset where they lie. Said once, as the reader's warnings are.
     void warn_if_coarse()
     {
-        point3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-        const auto grow = [&](const point3& p, float r) {
-            lo = glm::min(lo, p - vec3(r));
-            hi = glm::max(hi, p + vec3(r));
-        };
+        std::vector<Box> boxes;
         for (const NffSphere& s : scene_.spheres)
-            grow(s.center, s.radius);
+            boxes.push_back({s.center - vec3(s.radius), s.center + vec3(s.radius)});
         for (const NffTriangle& t : scene_.triangles)
-            for (const point3& p : t.p)
-                grow(p, 0.0f);
+            boxes.push_back({glm::min(t.p[0], glm::min(t.p[1], t.p[2])), glm::max(t.p[0], glm::max(t.p[1], t.p[2]))});
         for (const NffCone& c : scene_.cones) {
-            grow(c.base, c.base_radius);
-            grow(c.apex, c.apex_radius);
+            const float r = std::max(c.base_radius, c.apex_radius);
+            boxes.push_back({glm::min(c.base, c.apex) - vec3(r), glm::max(c.base, c.apex) + vec3(r)});
         }
-        const vec3 extent = hi - lo;
-        const float size = std::max({extent.x, extent.y, extent.z});
-        const float far = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
-                                    std::abs(hi.z)});
-        const float step = std::nextafter(far, std::numeric_limits<float>::infinity()) - far;
-        if (!(size < 0x1p14f * step))
-            return;
-        std::ostringstream why;
-        if (size == 0.0f)
-            why << name_ << ": every object rounds to one point, " << lo.x << " " << lo.y << " " << lo.z
-                << ", where float's step is " << step << ": the scene draws as one dot; move it toward the origin";
-        else
-            why << name_ << ": the scene is " << size << " across but lies " << far << " from the origin, where float's step is "
-                << step << ": only " << static_cast<long long>(size / step)
-                << " steps across it, so its shapes are rounded visibly (facets, flickering shadows); move it toward the origin";
-        scene_.warnings.push_back(why.str());
+        if (const std::string why = scene_beyond_float(boxes); !why.empty())
+            scene_.warnings.push_back(name_ + ": " + why);
     }
 
     [[noreturn]] void fail(int line, const std::string& what) const

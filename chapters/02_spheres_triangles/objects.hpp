@@ -188,7 +188,7 @@ struct Objects {
         }
         case ObjectKind::triangle: {
             const Triangle& tri = triangles[o.index];
-            return {triangle_surface_point(tri, {hit.t, hit.beta, hit.gamma}), face_normal(tri)};
+            return {triangle_surface_point(tri, ray), face_normal(tri)};
         }
         case ObjectKind::cone:
             break;

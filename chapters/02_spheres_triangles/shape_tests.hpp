@@ -88,10 +88,13 @@ inline std::optional<float> hit_cone_counted(const Ray& ray, const Cone& cone, I
 }
 
 // The triangle's unit face normal, (b - a) x (c - a) made unit: the geometric normal, the one a ray
-// leaving the surface must be offset along, and the side a one-sided triangle is seen from.
+// leaving the surface must be offset along, and the side a one-sided triangle is seen from. In
+// double: the cross product's squared length is the fourth power of the triangle's size, past
+// float's 3.4e38 for a triangle 1e10 across (its normal came out 0, and its floor was unlit).
 inline vec3 face_normal(const Triangle& tri)
 {
-    return glm::normalize(glm::cross(tri.b - tri.a, tri.c - tri.a));
+    const dvec3 a(tri.a);
+    return vec3(glm::normalize(glm::cross(dvec3(tri.b) - a, dvec3(tri.c) - a)));
 }
 
 }  // namespace rt

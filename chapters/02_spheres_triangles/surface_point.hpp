@@ -42,4 +42,18 @@ inline point3 triangle_surface_point(const Triangle& tri, const TriangleHit<floa
     return point3(a + double(hit.beta) * (dvec3(tri.b) - a) + double(hit.gamma) * (dvec3(tri.c) - a));
 }
 
+// Where `ray` meets the plane of `tri`, in double from the float ray and corners, rounded once: the
+// hit point a new ray leaves from. The barycentric sum above is as good as the test's beta and
+// gamma, which carry the test's own rounding, a few float steps of the corners: on a floor 1e8
+// across, the point slid 1.6 along a ray that met it 772 away, and the feelers' shadows moved with
+// it (the scale families, tests/structures/scale_families.hpp). The plane's t in double is off by
+// 2^-50 or so of the distances it combines, whatever the triangle's size.
+inline point3 triangle_surface_point(const Triangle& tri, const Ray& ray)
+{
+    const dvec3 a(tri.a), o(ray.origin), d(ray.dir);
+    const dvec3 n = glm::cross(dvec3(tri.b) - a, dvec3(tri.c) - a);
+    const double t = glm::dot(n, a - o) / glm::dot(n, d);
+    return point3(o + t * d);
+}
+
 }  // namespace rt

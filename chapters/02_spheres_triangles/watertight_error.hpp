@@ -135,18 +135,51 @@ inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, 
 }
 
 // The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
-// its origin too: its own t where that lies beyond the bound; nothing where it lies more than the
-// bound behind; in between, double's decision. A float t of -0 or a little below can belong to a
+// its origin too: its own t where that lies beyond the bound and the bound is small beside it;
+// nothing where it lies more than the bound behind; otherwise, double's decision. A float t of -0 or a little below can belong to a
 // surface certainly in front (a floor 1e9 across seen from 1e-3 above: its t rounds by more than
 // the eye's height), so the band is asked around 0 on both sides. The answer depends on the ray and
 // the triangle alone, never on a range: a query applies its range to the answer, not to the float
 // t, or two copies of one triangle asked in two ranges (the tie rule, closer_than) could answer
 // differently, the float t outside the nearer range and double's t inside it.
+// Where the bound on a float t exceeds coarse_t of the t itself, the hit stands (the float test's
+// watertight decision is kept: asking double whether a ray through a shared vertex hits would
+// decide one neighbour in double and the other in float, and let the ray slip between them), but
+// its t is taken again in double, where the ray meets the triangle's plane. On a triangle far larger
+// than its distance (a floor 1e8 across seen from 772 away) the float t was off by up to its bound
+// (1.6 there), which decided the order of surfaces that close (tiny triangles lying on the floor
+// vanished under it). 2^-20, a few times the rounding of an ordinary triangle's t, so the plane is
+// asked for only where the corners are far larger than the distance.
+constexpr float coarse_t = 0x1p-20f;
+
+// The t at which `ray` meets the plane of `tri`, in double from the float numbers: off by a few
+// 2^-53 of the magnitudes it combines.
+inline double plane_t(const Ray& ray, const Triangle& tri)
+{
+    const glm::dvec3 a(tri.a), o(ray.origin), d(ray.dir);
+    const glm::dvec3 n = glm::cross(glm::dvec3(tri.b) - a, glm::dvec3(tri.c) - a);
+    return glm::dot(n, a - o) / glm::dot(n, d);
+}
+
+// The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
+// its origin too: its own t where that lies beyond the bound (the plane's t in double where the
+// bound is coarse beside it); nothing where it lies more than the bound behind; in between,
+// double's decision. A float t of -0 or a little below can belong to a surface certainly in front
+// (a floor 1e9 across seen from 1e-3 above: its t rounds by more than the eye's height), so the
+// band is asked around 0 on both sides. The answer depends on the ray and the triangle alone,
+// never on a range: a query applies its range to the answer, not to the float t, or two copies of
+// one triangle asked in two ranges (the tie rule, closer_than) could answer differently, the float
+// t outside the nearer range and double's t inside it.
 inline bool bounded_answer(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, TriangleHit<float>& out)
 {
     const float bound = watertight_t_error(ray, tri);
     if (hit.t > bound) {
         out = hit;
+        if (bound > coarse_t * hit.t) {
+            const double t = plane_t(ray, tri);
+            if (t > 0.0 && t < std::numeric_limits<double>::infinity())
+                out.t = static_cast<float>(t);
+        }
         return true;
     }
     if (hit.t < -bound)

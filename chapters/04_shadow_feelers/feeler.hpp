@@ -5,9 +5,14 @@
 
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "04_shadow_feelers/closest_hit.hpp"
+#include "common/float_reach.hpp"
 #include "common/stats.hpp"
 
 namespace rt {
+
+// The reader's warning of objects finer than a feeler's offset (common/float_reach.hpp) counts the
+// offset's own steps.
+static_assert(offset_reach_steps == offset_int_scale, "float_reach.hpp's offset is EXERCISE 04.3's");
 
 // Where a ray leaving the surface point p along dir starts, and the t it accepts from there.
 struct RayStart {

@@ -4,6 +4,7 @@
 // 1e-4 to 1e6; and what shadow feelers cost, any-hit against closest-hit.
 #include "04_shadow_feelers/classic.hpp"
 #include "04_shadow_feelers/figure.hpp"
+#include "04_shadow_feelers/scale_families.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "common/cli.hpp"
 #include "common/output.hpp"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -282,12 +284,20 @@ void sweep(const Options& o)
     measure_offsets(o, rehits, missed, lesson);
     lesson.push_back(measure_feeler_cost(o, cost));
     lesson.push_back(feeler_tests_by_outcome(o));
+    std::cerr << "drawing the scale families (990 scenes) in float and in double...\n";
+    const std::vector<scale_families::Row> scales = scale_families::run_sweep();
+    lesson.push_back(scale_families::scales_table(scales));
     const std::string missed_csv = csv_beside(o.sweep.csv, "_missed"), cost_csv = csv_beside(o.sweep.csv, "_cost");
+    const std::string scales_csv = csv_beside(o.sweep.csv, "_scales");
     write_trade_csv(o.sweep.csv, rehits);
     write_trade_csv(missed_csv, missed);
     write_trade_csv(cost_csv, cost);
+    std::ofstream scales_out(scales_csv);
+    if (!scales_out)
+        throw InputError("cannot write " + scales_csv);
+    scale_families::write_rows_csv(scales_out, scales);
     write_lesson_tables(tables_beside(o.sweep.csv), lesson, std::cout);
-    std::cout << "\nwrote " << o.sweep.csv << ", " << missed_csv << ", " << cost_csv << " and "
+    std::cout << "\nwrote " << o.sweep.csv << ", " << missed_csv << ", " << cost_csv << ", " << scales_csv << " and "
               << tables_beside(o.sweep.csv) << '\n';
 }
 

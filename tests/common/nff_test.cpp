@@ -426,3 +426,31 @@ TEST_CASE("a tessellated ball 0.1 across is read whole at the origin and 1e3 and
             CHECK(without_area == 0);
     }
 }
+
+TEST_CASE("a view or objects beyond float's reach are named once, and a scene within it is not", "[common]")
+{
+    // An eye 1e6 times the scene's size away, with the angle that frames it: float turns a ray by
+    // more than a pixel there.
+    const std::string far_eye =
+        "v\nfrom 0 0 5e6\nat 0 0 0\nup 0 1 0\nangle 0.00002\nhither 1\nresolution 64 64\nl 1 1 1\nf 1 0 0 1 0 0 0 0\n"
+        "s 0 0 0 1\n";
+    const NffScene far = parse(far_eye);
+    REQUIRE(far.warnings.size() == 1);
+    CHECK(far.warnings[0].find("t.nff:1: float cannot hold this view") == 0);
+    CHECK(far.warnings[0].find("the eye stands 5e+06 from what it looks at") != std::string::npos);
+    // Triangles 0.02 across 1e5 from the origin, beside a floor 2e5 across: the scene is wide enough,
+    // but a feeler leaves those triangles 2 off their surface, past each other's shadows.
+    std::string tiny = lit + "p 3\n-1e5 0 -1e5\n0 0 1e5\n1e5 0 -1e5\n";
+    for (int k = 0; k < 3; ++k)
+        tiny += "p 3\n1e5 0.01 " + std::to_string(k) + "\n100000.02 0.01 " + std::to_string(k) + "\n1e5 0.02 " +
+                std::to_string(k) + ".02\n";
+    const NffScene fine = parse(tiny);
+    REQUIRE(fine.warnings.size() == 1);
+    CHECK(fine.warnings[0].find("t.nff: 3 objects are smaller than a shadow feeler's offset where they lie") == 0);
+    // The same triangles near the origin: nothing to say.
+    std::string near = lit;
+    for (int k = 0; k < 3; ++k)
+        near += "p 3\n1 0.01 " + std::to_string(k) + "\n1.02 0.01 " + std::to_string(k) + "\n1 0.02 " +
+                std::to_string(k) + ".02\n";
+    CHECK(parse(near).warnings.empty());
+}
