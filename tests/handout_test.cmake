@@ -1,5 +1,6 @@
-# The handout switches do what they say. HINT_TIERS=2 keeps tiers 1 and 2 of every exercise's hints
-# and loses the walk-through; 0 leaves no hint. CONTRACTS=behaviour (the default) drops every
+# The handout switches do what they say. HINT_TIERS=N keeps tiers 1 to N of every exercise's hints,
+# counted for each N and for the default, which keeps all three (the walk-through included); 0
+# leaves no hint. CONTRACTS=behaviour (the default) drops every
 # `// DETAIL BEGIN` ... `// DETAIL END` block of steps from the contracts, markers and all; detailed
 # keeps the steps and drops only the markers. No handout holds a solution or a mutant, and a
 # handout configures. Malformed markers stop the handout rather than hand out the steps. The first
@@ -37,27 +38,36 @@ if(kit_blocks EQUAL 0)
   message(FATAL_ERROR "no contract of ${KIT} has a `// DETAIL BEGIN` block: this test would prove nothing")
 endif()
 
-# Each setting: the hint tiers, and the contracts asked for (none: the default).
-foreach(setting "2:" "0:detailed")
+# Each setting: the hint tiers, and the contracts asked for (none: the default). The first is the
+# default handout, which must keep all three tiers.
+foreach(setting "default:" "3:" "2:" "1:" "0:detailed")
   string(REPLACE ":" ";" setting "${setting}")
   list(GET setting 0 tiers)
   list(GET setting 1 contracts)
+  set(tiers_flag -D "HINT_TIERS=${tiers}")
+  set(said "HINT_TIERS=${tiers}")
+  set(out "${WORK}/tiers_${tiers}")
+  if(tiers STREQUAL "default")
+    set(tiers_flag "")
+    set(said "HINT_TIERS unset (the default)")
+    set(tiers 3)
+    set(out "${WORK}/default")
+  endif()
   set(contracts_flag "")
   set(level "behaviour")
   if(contracts)
     set(contracts_flag -D "CONTRACTS=${contracts}")
     set(level "${contracts}")
   endif()
-  set(out "${WORK}/tiers_${tiers}")
   set(classroom ON)
   if(tiers EQUAL 0)
     set(classroom OFF)
   endif()
-  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" ${contracts_flag}
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" ${tiers_flag} ${contracts_flag}
       -D "CLASSROOM=${classroom}" -P "${KIT}/tests/handout.cmake"
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "handout.cmake failed with HINT_TIERS=${tiers} ${contracts_flag}:\n${log}")
+    message(FATAL_ERROR "handout.cmake failed with ${said} ${contracts_flag}:\n${log}")
   endif()
   if(EXISTS "${out}/solutions" OR EXISTS "${out}/tests/mutants" OR EXISTS "${out}/tests/mutation" OR NOT EXISTS "${out}/exercises")
     message(FATAL_ERROR "the handout in ${out} should have exercises/ and neither solutions/ nor tests/mutants/ nor tests/mutation/")
@@ -73,9 +83,9 @@ foreach(setting "2:" "0:detailed")
   endif()
   execute_process(COMMAND "${HINT}" --check ${tiers} --kit "${out}" RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "the handout with HINT_TIERS=${tiers} does not have ${tiers} tier(s) for every exercise:\n${log}")
+    message(FATAL_ERROR "the handout with ${said} does not have ${tiers} tier(s) for every exercise:\n${log}")
   endif()
-  message(STATUS "HINT_TIERS=${tiers}: ${log}")
+  message(STATUS "${said}: ${log}")
 
   # The contracts: no marker left anywhere, and each marked file exactly as its level says.
   file(GLOB_RECURSE handed_out "${out}/chapters/*" "${out}/exercises/*")
