@@ -87,12 +87,31 @@ foreach(setting "default:" "3:" "2:" "1:" "0:detailed")
   endif()
   message(STATUS "${said}: ${log}")
 
-  # The contracts: no marker left anywhere, and each marked file exactly as its level says.
-  file(GLOB_RECURSE handed_out "${out}/chapters/*" "${out}/exercises/*")
+  # The contracts: no marker left anywhere in the handout, dot-folders included (Classroom's copy
+  # of the stubs is in .github/): a contract's DETAIL markers, or a solution's cut markers, at the
+  # start of a line, where the kit's contracts and solutions have them (the tools that read them
+  # quote them mid-line). Each marked file exactly as its level says.
+  file(GLOB_RECURSE handed_out LIST_DIRECTORIES false "${out}/*")
+  set(dot_files 0)
   foreach(file IN LISTS handed_out)
-    file(STRINGS "${file}" markers REGEX "// DETAIL (BEGIN|END)")
+    if(file MATCHES "/\\.")
+      math(EXPR dot_files "${dot_files} + 1")
+    endif()
+    file(STRINGS "${file}" markers REGEX "^[ \t]*// (DETAIL (BEGIN|END)|SOLUTION (BEGIN|END)|STUB)")
     if(markers)
-      message(FATAL_ERROR "CONTRACTS=${level}: ${file} still holds DETAIL markers:\n${markers}")
+      message(FATAL_ERROR "CONTRACTS=${level}: ${file} still holds markers:\n${markers}")
+    endif()
+  endforeach()
+  if(classroom AND dot_files EQUAL 0)
+    message(FATAL_ERROR "the search for markers saw no file under a dot-folder of ${out}: it would miss .github/")
+  endif()
+  # Classroom's stubs are the handout's own exercises, byte for byte.
+  foreach(stub IN LISTS stubs)
+    get_filename_component(name "${stub}" NAME)
+    file(READ "${stub}" got)
+    file(READ "${out}/exercises/${name}" want)
+    if(NOT got STREQUAL want)
+      message(FATAL_ERROR "CONTRACTS=${level}: ${stub} is not the handout's exercises/${name}")
     endif()
   endforeach()
   foreach(contract IN LISTS marked_contracts)
