@@ -39,6 +39,40 @@ foreach(entry CMakeLists.txt CMakePresets.json README.md .gitignore .ci .devcont
   endif()
 endforeach()
 file(REMOVE_RECURSE "${OUT}/tests/mutants")
+# The handout speaks of itself, and has no solutions/ to send a student to. The README drops what
+# only the kit has: a line ending in `<!-- kit only -->`, and the lines from `<!-- kit only: begin -->`
+# to `<!-- kit only: end -->`; a mention of solutions/ left outside them stops the handout.
+file(READ "${OUT}/README.md" text)
+while(TRUE)
+  string(FIND "${text}" "<!-- kit only: begin -->\n" begin)
+  if(begin EQUAL -1)
+    break()
+  endif()
+  string(SUBSTRING "${text}" ${begin} -1 rest)
+  string(FIND "${rest}" "<!-- kit only: end -->\n" end)
+  if(end EQUAL -1)
+    message(FATAL_ERROR "handout: README.md has a `<!-- kit only: begin -->` without its `<!-- kit only: end -->`")
+  endif()
+  string(SUBSTRING "${text}" 0 ${begin} before)
+  math(EXPR after "${end} + 23")  # the end marker and its newline
+  string(SUBSTRING "${rest}" ${after} -1 rest)
+  set(text "${before}${rest}")
+endwhile()
+string(REGEX REPLACE "(^|\n)[^\n]*<!-- kit only -->\n" "\\1" text "${text}")
+string(REGEX REPLACE "\n\n\n+" "\n\n" text "${text}")  # (a block dropped between two blank lines)
+string(REGEX MATCH "[^\n]*solutions/[^\n]*" left "${text}")
+if(left)
+  message(FATAL_ERROR "handout: README.md speaks of solutions/ outside a kit-only block:\n${left}")
+endif()
+file(WRITE "${OUT}/README.md" "${text}")
+# Each contract header's first paragraph says where the student writes the exercises; the kit's also
+# says where the reference answers are, which a handout does not have.
+file(GLOB contract_headers "${OUT}/chapters/[0-9][0-9]_*/[0-9][0-9]_*.hpp")
+foreach(header IN LISTS contract_headers)
+  file(READ "${header}" text)
+  string(REGEX REPLACE ";[ \n/]*the reference answers are in[ \n/]*solutions/[0-9a-z_]+\\.cpp\\." "." text "${text}")
+  file(WRITE "${header}" "${text}")
+endforeach()
 # The machine-made mutants' list of equivalent ones quotes the solutions' lines too.
 file(REMOVE_RECURSE "${OUT}/tests/mutation")
 file(GLOB hint_files "${OUT}/chapters/*/hints.md")

@@ -3,9 +3,11 @@
 # leaves no hint. CONTRACTS=behaviour (the default) drops every
 # `// DETAIL BEGIN` ... `// DETAIL END` block of steps from the contracts, markers and all; detailed
 # keeps the steps and drops only the markers. No handout holds a solution or a mutant, and a
-# handout configures. Malformed markers stop the handout rather than hand out the steps. The first
-# handout carries GitHub Classroom's workflow and the stubs it restores; the second, written with
-# CLASSROOM=OFF, neither (the workflow's own test: classroom/workflow_test.cmake).
+# handout configures. Malformed markers stop the handout rather than hand out the steps. No marker
+# is left anywhere, dot-folders included. The handout's README and contract headers do not speak of
+# solutions/. The first handouts carry GitHub Classroom's workflow and the stubs it restores (the
+# handout's own exercises); the last, written with CLASSROOM=OFF, neither (the workflow's own test:
+# classroom/workflow_test.cmake).
 #   cmake -D KIT=<the kit> -D HINT=<the hint program> -D WORK=<a scratch folder> -P handout_test.cmake
 cmake_minimum_required(VERSION 3.22)
 
@@ -14,6 +16,8 @@ cmake_minimum_required(VERSION 3.22)
 # line but the END marker (strictly: one not starting `// DET`).
 set(block_line "[ \t]*//(\n|[^ \n][^\n]*\n| \n| [^D\n][^\n]*\n| D\n| D[^E\n][^\n]*\n| DE\n| DE[^T\n][^\n]*\n)")
 function(expected_contract text level out)
+  # The handout has no solutions/: the header's sentence on where the reference answers are goes.
+  string(REGEX REPLACE ";[ \n/]*the reference answers are in[ \n/]*solutions/[0-9a-z_]+\\.cpp\\." "." text "${text}")
   if(level STREQUAL "detailed")
     string(REGEX REPLACE "[ \t]*// DETAIL (BEGIN|END)[^\n]*\n" "" text "${text}")
   else()
@@ -105,6 +109,25 @@ foreach(setting "default:" "3:" "2:" "1:" "0:detailed")
   if(classroom AND dot_files EQUAL 0)
     message(FATAL_ERROR "the search for markers saw no file under a dot-folder of ${out}: it would miss .github/")
   endif()
+  # The handout describes itself: its README never mentions solutions/ (nor keeps a kit-only
+  # marker), and no contract header says where the reference answers are; each still says where the
+  # student writes them.
+  file(READ "${out}/README.md" readme)
+  string(REGEX MATCH "[^\n]*(solutions/|kit only)[^\n]*" left "${readme}")
+  if(left)
+    message(FATAL_ERROR "the handout's README.md speaks of what the handout lacks:\n${left}")
+  endif()
+  file(GLOB headers "${out}/chapters/[0-9][0-9]_*/[0-9][0-9]_*.hpp")
+  foreach(header IN LISTS headers)
+    get_filename_component(name "${header}" NAME_WE)
+    file(READ "${header}" text)
+    string(REGEX REPLACE "\n// " " " text "${text}")
+    if(text MATCHES "reference answers are in" OR NOT text MATCHES "You write them in exercises/${name}\\.cpp\\. Do not edit")
+      string(SUBSTRING "${text}" 0 400 start)
+      message(FATAL_ERROR "${header} should say the exercises are written in exercises/${name}.cpp and not where the reference answers are:\n${start}")
+    endif()
+  endforeach()
+
   # Classroom's stubs are the handout's own exercises, byte for byte.
   foreach(stub IN LISTS stubs)
     get_filename_component(name "${stub}" NAME)
