@@ -74,10 +74,13 @@ foreach(chapter IN LISTS RT_CHAPTERS)
   # From chapter 07 on, the figures are the kit's generated scenes (common/scenes/nff_generators).
   target_link_libraries(${chapter} PRIVATE ${libs} nff_generators)
   set(figure "${RT_FIGURES_DIR}/${chapter}.png")
+  # On the terminal (Ninja's console pool, one render at a time, each on every core): Ninja would
+  # otherwise hold a render's progress line until the render ends.
   add_custom_command(OUTPUT "${figure}"
     COMMAND ${chapter} --out "${figure}" ${RT_FIGURE_ARGS_${chapter}}
     DEPENDS ${chapter}
     COMMENT "Rendering ${figure}"
+    USES_TERMINAL
     VERBATIM)
   list(APPEND figure_files "${figure}")
 endforeach()

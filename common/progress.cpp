@@ -78,4 +78,40 @@ void Progress::tick()
     std::fflush(stderr);
 }
 
+StepProgress::StepProgress(std::string steps_done)
+    : steps_done_(std::move(steps_done)), period_(stderr_is_terminal() ? step_terminal_seconds : progress_log_seconds),
+      start_(std::chrono::steady_clock::now())
+{
+    // (A tenth of a second at least: a period of 0, which Progress takes as "at every tick", would
+    // be a line without end here.)
+    if (const char* period = std::getenv("RT_PROGRESS_SECONDS"))
+        period_ = std::max(0.1, std::atof(period));
+    sayer_ = std::thread([this] { say_every_period(); });
+}
+
+StepProgress::~StepProgress()
+{
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_one();
+    sayer_.join();
+    if (said_)
+        std::fprintf(stderr, "%ld %s in %s\n", done_.load(), steps_done_.c_str(),
+                     readable_duration(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()).c_str());
+}
+
+void StepProgress::say_every_period()
+{
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(period_));
+    for (auto next = start_ + period; !wake_.wait_until(lock, next, [this] { return stopping_; }); next += period) {
+        said_ = true;
+        std::fprintf(stderr, "%ld %s so far (%s)\n", done_.load(), steps_done_.c_str(),
+                     readable_duration(std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()).c_str());
+        std::fflush(stderr);
+    }
+}
+
 }  // namespace rt

@@ -7,8 +7,10 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <string>
+#include <thread>
 
 namespace rt {
 
@@ -32,6 +34,34 @@ private:
     std::mutex print_mutex_;
     std::chrono::steady_clock::time_point start_, last_print_;
 };
+
+// Work of an unknown number of uneven steps (a sweep's measurements, one of which may take half a
+// minute): from its own thread, a whole line on stderr every period, the steps done and the time so
+// far, step_terminal_seconds apart on a terminal, progress_log_seconds in a log or a pipe
+// (RT_PROGRESS_SECONDS overrides both). Whole lines, never updated in place, so that what the
+// program prints on stdout meanwhile stays whole. step() is safe from any thread.
+class StepProgress {
+public:
+    explicit StepProgress(std::string steps_done);  // "structures measured"
+    ~StepProgress();
+    void step() { ++done_; }
+
+private:
+    void say_every_period();
+
+    std::string steps_done_;
+    std::atomic<long> done_{0};
+    double period_;
+    bool said_ = false, stopping_ = false;
+    std::chrono::steady_clock::time_point start_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::thread sayer_;
+};
+
+// Why 3 s: someone at a terminal waiting on a sweep of a minute or more sees that it moves without
+// a screenful of lines.
+constexpr double step_terminal_seconds = 3.0;
 
 // "12 s", "3 min 20 s", "1 h 05 min": a duration as a person reads it.
 std::string readable_duration(double seconds);

@@ -287,3 +287,51 @@ file(READ "${WORK}/build/students/carol/results.json" json)
 if(NOT rc EQUAL 0 OR NOT json MATCHES "chapter 01 is still the handed-out stubs")
   fail("a second batch should grade carol's chapter 01 as the stubs again, not the program an earlier run built")
 endif()
+
+# The final regrade of a GitHub Classroom course: three clones of students' repositories, each the
+# handout with the student's files under exercises/ (and the handout's README, its stubs' copy under
+# .github/classroom/stubs). Each is graded from its exercises/: dave's solutions score in full,
+# erin's chapter 01 in full and her untouched chapter 02 is the stubs' line, frank, who deleted his
+# chapter 02 file, has no file there; none of them is told "the submission has no 01_ray_casting.cpp".
+set(clones "${WORK}/clones")
+file(REMOVE_RECURSE "${clones}")
+foreach(student dave erin frank)
+  file(MAKE_DIRECTORY "${clones}/${student}/exercises" "${clones}/${student}/.github/classroom/stubs")
+  file(COPY "${SOURCE_DIR}/README.md" DESTINATION "${clones}/${student}")
+  file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp"
+    DESTINATION "${clones}/${student}/.github/classroom/stubs")
+endforeach()
+file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/solutions/02_spheres_triangles.cpp"
+  DESTINATION "${clones}/dave/exercises")
+file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp"
+  DESTINATION "${clones}/erin/exercises")
+file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${clones}/frank/exercises")
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${clones}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
+    -P "${SOURCE_DIR}/tests/grade_batch.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(NOT rc EQUAL 0)
+  fail("the batch of clones exited with ${rc}")
+endif()
+string(REGEX MATCH "dave: ([0-9]+) / ([0-9]+)" dave "${out}")
+if(NOT dave OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2 OR NOT CMAKE_MATCH_2 EQUAL maximum)
+  fail("dave's clone holds the solutions under exercises/: ${maximum} / ${maximum}, not '${dave}'")
+endif()
+foreach(student erin frank)
+  file(READ "${WORK}/build/students/${student}/results.json" json)
+  if(json MATCHES "the submission has no 01_ray_casting.cpp")
+    fail("${student}'s clone has exercises/01_ray_casting.cpp, yet the batch did not find it:\n${json}")
+  endif()
+  string(REGEX MATCHALL "\"number\": \"01\\.[0-9A-Z]+\", \"score\": [0-9]+, \"max_score\": [0-9]+" cases "${json}")
+  foreach(c IN LISTS cases)
+    if(NOT c MATCHES "\"score\": ([0-9]+), \"max_score\": ([0-9]+)$" OR NOT CMAKE_MATCH_1 EQUAL CMAKE_MATCH_2)
+      fail("${student}'s chapter 01 is the solution, yet ${c}")
+    endif()
+  endforeach()
+  if(NOT cases)
+    fail("${student}'s results.json lists no case of chapter 01:\n${json}")
+  endif()
+  set(json_${student} "${json}")
+endforeach()
+expect_whole_chapter(erin "${json_erin}" 02 "chapter 02 is still the handed-out stubs" "saying it is still the handed-out stubs")
+expect_whole_chapter(frank "${json_frank}" 02 "the submission has no 02_spheres_triangles.cpp" "saying the file is missing")
+message(STATUS "three clones graded from their exercises/: ${out}")

@@ -1,5 +1,6 @@
 # Batch grading: every submission folder under SUBMISSIONS (one per student, each holding that
-# student's NN_name.cpp files) graded into one CSV gradebook.
+# student's NN_name.cpp files, or a clone of their repository, whose files are under exercises/)
+# graded into one CSV gradebook.
 #
 #   cmake -D SUBMISSIONS=/path/to/class -P tests/grade_batch.cmake
 #
@@ -50,6 +51,15 @@ foreach(entry IN LISTS entries)
   endif()
   get_filename_component(student "${entry}" NAME)
   message(STATUS "==== ${student}")
+  # A clone of a student's repository (GitHub Classroom's "Download repositories") keeps the files
+  # where the handout put them, under exercises/; a folder of files holds them at its top.
+  set(files "${entry}")
+  file(GLOB top "${entry}/[0-9][0-9]_*.cpp")
+  file(GLOB cloned "${entry}/exercises/[0-9][0-9]_*.cpp")
+  if(NOT top AND cloned)
+    set(files "${entry}/exercises")
+    message(STATUS "${student}: a clone, graded from its exercises/")
+  endif()
   # Every student's files compile afresh: a copied submission keeps its files' old times, older
   # than the objects a rerun of the batch left, and a build that trusts times would grade those.
   file(GLOB stale LIST_DIRECTORIES true "${BUILD_DIR}/CMakeFiles/ex_*.dir" "${BUILD_DIR}/ex_*.dir")
@@ -57,7 +67,7 @@ foreach(entry IN LISTS entries)
     file(REMOVE_RECURSE ${stale})
   endif()
   execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" ${generator}
-      -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${entry}" "-D RT_GRADE_CHAPTERS=${CHAPTERS}"
+      -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${files}" "-D RT_GRADE_CHAPTERS=${CHAPTERS}"
     RESULT_VARIABLE rc OUTPUT_QUIET)
   if(rc EQUAL 0)
     execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --config Release --target grade_report RESULT_VARIABLE rc)

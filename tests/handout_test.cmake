@@ -1,10 +1,13 @@
-# The handout switches do what they say. HINT_TIERS=2 keeps tiers 1 and 2 of every exercise's hints
-# and loses the walk-through; 0 leaves no hint. CONTRACTS=behaviour (the default) drops every
+# The handout switches do what they say. HINT_TIERS=N keeps tiers 1 to N of every exercise's hints,
+# counted for each N and for the default, which keeps all three (the walk-through included); 0
+# leaves no hint. CONTRACTS=behaviour (the default) drops every
 # `// DETAIL BEGIN` ... `// DETAIL END` block of steps from the contracts, markers and all; detailed
 # keeps the steps and drops only the markers. No handout holds a solution or a mutant, and a
-# handout configures. Malformed markers stop the handout rather than hand out the steps. The first
-# handout carries GitHub Classroom's workflow and the stubs it restores; the second, written with
-# CLASSROOM=OFF, neither (the workflow's own test: classroom/workflow_test.cmake).
+# handout configures. Malformed markers stop the handout rather than hand out the steps. No marker
+# is left anywhere, dot-folders included. The handout's README and contract headers do not speak of
+# solutions/. The first handouts carry GitHub Classroom's workflow and the stubs it restores (the
+# handout's own exercises); the last, written with CLASSROOM=OFF, neither (the workflow's own test:
+# classroom/workflow_test.cmake).
 #   cmake -D KIT=<the kit> -D HINT=<the hint program> -D WORK=<a scratch folder> -P handout_test.cmake
 cmake_minimum_required(VERSION 3.22)
 
@@ -13,6 +16,8 @@ cmake_minimum_required(VERSION 3.22)
 # line but the END marker (strictly: one not starting `// DET`).
 set(block_line "[ \t]*//(\n|[^ \n][^\n]*\n| \n| [^D\n][^\n]*\n| D\n| D[^E\n][^\n]*\n| DE\n| DE[^T\n][^\n]*\n)")
 function(expected_contract text level out)
+  # The handout has no solutions/: the header's sentence on where the reference answers are goes.
+  string(REGEX REPLACE ";[ \n/]*the reference answers are in[ \n/]*solutions/[0-9a-z_]+\\.cpp\\." "." text "${text}")
   if(level STREQUAL "detailed")
     string(REGEX REPLACE "[ \t]*// DETAIL (BEGIN|END)[^\n]*\n" "" text "${text}")
   else()
@@ -37,27 +42,36 @@ if(kit_blocks EQUAL 0)
   message(FATAL_ERROR "no contract of ${KIT} has a `// DETAIL BEGIN` block: this test would prove nothing")
 endif()
 
-# Each setting: the hint tiers, and the contracts asked for (none: the default).
-foreach(setting "2:" "0:detailed")
+# Each setting: the hint tiers, and the contracts asked for (none: the default). The first is the
+# default handout, which must keep all three tiers.
+foreach(setting "default:" "3:" "2:" "1:" "0:detailed")
   string(REPLACE ":" ";" setting "${setting}")
   list(GET setting 0 tiers)
   list(GET setting 1 contracts)
+  set(tiers_flag -D "HINT_TIERS=${tiers}")
+  set(said "HINT_TIERS=${tiers}")
+  set(out "${WORK}/tiers_${tiers}")
+  if(tiers STREQUAL "default")
+    set(tiers_flag "")
+    set(said "HINT_TIERS unset (the default)")
+    set(tiers 3)
+    set(out "${WORK}/default")
+  endif()
   set(contracts_flag "")
   set(level "behaviour")
   if(contracts)
     set(contracts_flag -D "CONTRACTS=${contracts}")
     set(level "${contracts}")
   endif()
-  set(out "${WORK}/tiers_${tiers}")
   set(classroom ON)
   if(tiers EQUAL 0)
     set(classroom OFF)
   endif()
-  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "HINT_TIERS=${tiers}" ${contracts_flag}
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" ${tiers_flag} ${contracts_flag}
       -D "CLASSROOM=${classroom}" -P "${KIT}/tests/handout.cmake"
     RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "handout.cmake failed with HINT_TIERS=${tiers} ${contracts_flag}:\n${log}")
+    message(FATAL_ERROR "handout.cmake failed with ${said} ${contracts_flag}:\n${log}")
   endif()
   if(EXISTS "${out}/solutions" OR EXISTS "${out}/tests/mutants" OR EXISTS "${out}/tests/mutation" OR NOT EXISTS "${out}/exercises")
     message(FATAL_ERROR "the handout in ${out} should have exercises/ and neither solutions/ nor tests/mutants/ nor tests/mutation/")
@@ -73,16 +87,54 @@ foreach(setting "2:" "0:detailed")
   endif()
   execute_process(COMMAND "${HINT}" --check ${tiers} --kit "${out}" RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "the handout with HINT_TIERS=${tiers} does not have ${tiers} tier(s) for every exercise:\n${log}")
+    message(FATAL_ERROR "the handout with ${said} does not have ${tiers} tier(s) for every exercise:\n${log}")
   endif()
-  message(STATUS "HINT_TIERS=${tiers}: ${log}")
+  message(STATUS "${said}: ${log}")
 
-  # The contracts: no marker left anywhere, and each marked file exactly as its level says.
-  file(GLOB_RECURSE handed_out "${out}/chapters/*" "${out}/exercises/*")
+  # The contracts: no marker left anywhere in the handout, dot-folders included (Classroom's copy
+  # of the stubs is in .github/): a contract's DETAIL markers, or a solution's cut markers, at the
+  # start of a line, where the kit's contracts and solutions have them (the tools that read them
+  # quote them mid-line). Each marked file exactly as its level says.
+  file(GLOB_RECURSE handed_out LIST_DIRECTORIES false "${out}/*")
+  set(dot_files 0)
   foreach(file IN LISTS handed_out)
-    file(STRINGS "${file}" markers REGEX "// DETAIL (BEGIN|END)")
+    if(file MATCHES "/\\.")
+      math(EXPR dot_files "${dot_files} + 1")
+    endif()
+    file(STRINGS "${file}" markers REGEX "^[ \t]*// (DETAIL (BEGIN|END)|SOLUTION (BEGIN|END)|STUB)")
     if(markers)
-      message(FATAL_ERROR "CONTRACTS=${level}: ${file} still holds DETAIL markers:\n${markers}")
+      message(FATAL_ERROR "CONTRACTS=${level}: ${file} still holds markers:\n${markers}")
+    endif()
+  endforeach()
+  if(classroom AND dot_files EQUAL 0)
+    message(FATAL_ERROR "the search for markers saw no file under a dot-folder of ${out}: it would miss .github/")
+  endif()
+  # The handout describes itself: its README never mentions solutions/ (nor keeps a kit-only
+  # marker), and no contract header says where the reference answers are; each still says where the
+  # student writes them.
+  file(READ "${out}/README.md" readme)
+  string(REGEX MATCH "[^\n]*(solutions/|kit only)[^\n]*" left "${readme}")
+  if(left)
+    message(FATAL_ERROR "the handout's README.md speaks of what the handout lacks:\n${left}")
+  endif()
+  file(GLOB headers "${out}/chapters/[0-9][0-9]_*/[0-9][0-9]_*.hpp")
+  foreach(header IN LISTS headers)
+    get_filename_component(name "${header}" NAME_WE)
+    file(READ "${header}" text)
+    string(REGEX REPLACE "\n// " " " text "${text}")
+    if(text MATCHES "reference answers are in" OR NOT text MATCHES "You write them in exercises/${name}\\.cpp\\. Do not edit")
+      string(SUBSTRING "${text}" 0 400 start)
+      message(FATAL_ERROR "${header} should say the exercises are written in exercises/${name}.cpp and not where the reference answers are:\n${start}")
+    endif()
+  endforeach()
+
+  # Classroom's stubs are the handout's own exercises, byte for byte.
+  foreach(stub IN LISTS stubs)
+    get_filename_component(name "${stub}" NAME)
+    file(READ "${stub}" got)
+    file(READ "${out}/exercises/${name}" want)
+    if(NOT got STREQUAL want)
+      message(FATAL_ERROR "CONTRACTS=${level}: ${stub} is not the handout's exercises/${name}")
     endif()
   endforeach()
   foreach(contract IN LISTS marked_contracts)

@@ -401,4 +401,20 @@ add_test(NAME programs.progress_in_a_log
     -D "ARGS=--width|16|--height|8|--threads|1|--out|${CMAKE_CURRENT_BINARY_DIR}/programs/progress.png"
     -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
 set_tests_properties(programs.progress_in_a_log PROPERTIES LABELS "programs")
+# Under Ninja, a figure's render shows its progress as it draws (chapters/chapters.cmake).
+if(CMAKE_GENERATOR STREQUAL "Ninja")
+  add_test(NAME programs.figures_render_on_the_terminal
+    COMMAND ${CMAKE_COMMAND} -D "NINJA_FILE=${CMAKE_BINARY_DIR}/build.ninja"
+      -P "${CMAKE_CURRENT_SOURCE_DIR}/figures_on_the_terminal.cmake")
+  set_tests_properties(programs.figures_render_on_the_terminal PROPERTIES LABELS "programs")
+endif()
+# A sweep says it is alive between its measurements, one of which may take half a minute: lines
+# from its own thread, the count so far and the time, every period (half a second here, on a
+# sweep of chapter 07 shrunk to about 4 s), then the count and the time it took.
+add_test(NAME programs.sweep_says_it_is_alive
+  COMMAND ${CMAKE_COMMAND} -D "PROGRAM=$<TARGET_FILE:07_uniform_grid>" -D PROGRESS_SECONDS=0.5 -D STATUS=0
+    -D "MATCH=\n[0-9]+ structures measured so far \\([0-9]+ s\\)\n(.*\n)?[0-9]+ structures measured in [0-9]+ s"
+    -D "ARGS=--sweep|--repeat|1|--width|16|--height|9|--csv|${CMAKE_CURRENT_BINARY_DIR}/programs/sweep_alive.csv"
+    -P "${CMAKE_CURRENT_SOURCE_DIR}/expect_exit.cmake")
+set_tests_properties(programs.sweep_says_it_is_alive PROPERTIES LABELS "programs")
 rt_expect_exit(benchmark.unknown_structure benchmark 2 "--structures: unknown structure 'kd'" --structures bvh,kd --tiny)

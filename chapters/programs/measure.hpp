@@ -4,6 +4,7 @@
 // times vary least from run to run.
 #pragma once
 
+#include "common/progress.hpp"
 #include "common/trade.hpp"
 #include "programs/scene_program.hpp"
 
@@ -40,6 +41,14 @@ StructureMaker keeping_stats(Stats& stats, Args... args)
     };
 }
 
+// The sweep's progress: each structure measured is a step (a sweep of chapter 07 measures for
+// more than a minute, which would otherwise pass without a word).
+inline StepProgress& sweep_progress()
+{
+    static StepProgress progress("structures measured");
+    return progress;
+}
+
 // `builds` builds (1 is enough for brute force, which builds nothing) and `renders` timed renders.
 inline Measurement measure_structure(const NffScene& nff, const StructureMaker& make, const RenderSettings& settings,
                                      int builds, int renders)
@@ -63,6 +72,7 @@ inline Measurement measure_structure(const NffScene& nff, const StructureMaker& 
     m.counts = total_counts();
     m.rays = total_rays(m.counts);
     m.render_ms = scaled(time_runs(renders, [&] { render_lit(file, scene, FeelerSettings{}); }), 1e3);
+    sweep_progress().step();
     return m;
 }
 

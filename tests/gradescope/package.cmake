@@ -2,10 +2,24 @@
 # them, so a chapter is graded with the solutions of the chapters before it) with setup.sh and
 # run_autograder at the zip's root, as Gradescope wants them; it unpacks the zip into
 # /autograder/source.
-#   cmake -D SOURCE_DIR=<the kit> -D OUT=<folder> -P package.cmake
+#   cmake -D SOURCE_DIR=<the kit> -D OUT=<folder> [-D CHAPTERS="07;08"] -P package.cmake
+# CHAPTERS: the chapters this assignment grades (a course with one assignment a chapter writes one
+# package each); none: all ten. Written to graded_chapters.txt, which run_autograder reads.
+if(NOT "${CHAPTERS}" MATCHES "^([0-9][0-9](;[0-9][0-9])*)?$")
+  message(FATAL_ERROR "gradescope package: CHAPTERS is a list of chapter numbers, \"07;08\", not '${CHAPTERS}'")
+endif()
+foreach(nn IN LISTS CHAPTERS)
+  file(GLOB chapter "${SOURCE_DIR}/exercises/${nn}_*.cpp")
+  if(NOT chapter)
+    message(FATAL_ERROR "gradescope package: CHAPTERS names chapter ${nn}, which the kit does not have (exercises/${nn}_*.cpp)")
+  endif()
+endforeach()
 set(stage "${OUT}/package")
 file(REMOVE_RECURSE "${stage}")
 file(MAKE_DIRECTORY "${stage}")
+if(CHAPTERS)
+  file(WRITE "${stage}/graded_chapters.txt" "${CHAPTERS}")
+endif()
 # (Not CMakePresets.json: the autograder calls CMake itself, and the presets need CMake 3.25.)
 foreach(entry CMakeLists.txt README.md chapters common exercises solutions tests)
   if(EXISTS "${SOURCE_DIR}/${entry}")
@@ -21,4 +35,8 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -E tar cf "${OUT}/autograder.zip" --f
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "could not write ${OUT}/autograder.zip")
 endif()
-message(STATUS "wrote ${OUT}/autograder.zip: upload it as the assignment's autograder (Ubuntu image)")
+set(graded "every chapter")
+if(CHAPTERS)
+  set(graded "chapters ${CHAPTERS}")
+endif()
+message(STATUS "wrote ${OUT}/autograder.zip, grading ${graded}: upload it as the assignment's autograder (Ubuntu image)")

@@ -1,11 +1,20 @@
 # The Gradescope package, run as Gradescope would run it, in a throw-away copy of its layout:
-# the package unpacked into autograder/source, setup.sh (which builds the kit once), a submission
-# (chapter 01's solution, in a folder of its own as students upload them) in autograder/submission,
-# then run_autograder, grading chapter 01 only. The submission must compile only its own file, and
-# results.json must hold chapter 01's cases, at full points.
+# the package, written for an assignment of chapter 01 alone (-D CHAPTERS=01, as a course with one
+# assignment a chapter writes it), unpacked into autograder/source, setup.sh (which builds the kit
+# once), a submission (chapter 01's solution, in a folder of its own as students upload them) in
+# autograder/submission, then run_autograder, as Gradescope runs them: no setting of their own. The
+# submission must compile only its own file, and results.json must hold chapter 01's cases alone,
+# at full points. A package asked for a chapter the kit does not have is not written.
 #   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P package_test.cmake
 file(REMOVE_RECURSE "${WORK}/autograder")
-execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}"
+foreach(bad "11" "1;2" "01,02")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}/bad" "-DCHAPTERS=${bad}"
+    -P "${SOURCE_DIR}/tests/gradescope/package.cmake" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(rc EQUAL 0 OR NOT out MATCHES "gradescope package: CHAPTERS")
+    message(FATAL_ERROR "a package for CHAPTERS=${bad} should not be written, and say why (${rc}):\n${out}")
+  endif()
+endforeach()
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}" -D CHAPTERS=01
   -P "${SOURCE_DIR}/tests/gradescope/package.cmake" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the package was not written")
@@ -20,7 +29,7 @@ foreach(file setup.sh run_autograder CMakeLists.txt tests/grade.cmake)
 endforeach()
 # setup.sh, as Gradescope runs it when it builds the image (the packages are this machine's).
 string(TIMESTAMP t0 "%s")
-execute_process(COMMAND "${CMAKE_COMMAND}" -E env "AUTOGRADER_ROOT=${root}" "RT_GRADE_CHAPTERS=01" RT_SKIP_PACKAGES=1
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=RT_GRADE_CHAPTERS "AUTOGRADER_ROOT=${root}" RT_SKIP_PACKAGES=1
     bash "${root}/source/setup.sh"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 string(TIMESTAMP t1 "%s")
@@ -30,7 +39,7 @@ endif()
 file(STRINGS "${root}/work/build/.ninja_log" built)
 list(LENGTH built setup_log_lines)
 file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${root}/submission/my_work")
-execute_process(COMMAND "${CMAKE_COMMAND}" -E env "AUTOGRADER_ROOT=${root}" "RT_GRADE_CHAPTERS=01"
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=RT_GRADE_CHAPTERS "AUTOGRADER_ROOT=${root}"
     bash "${root}/source/run_autograder"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 string(TIMESTAMP t2 "%s")
@@ -59,6 +68,10 @@ foreach(m IN LISTS maxima)
   math(EXPR total "${total} + ${points}")
 endforeach()
 list(LENGTH cases n)
+string(REGEX MATCHALL "\"number\": \"(0[2-9]|10)[^\"]*\"" others "${json}")
+if(others)
+  message(FATAL_ERROR "the package was written for chapter 01 alone, yet results.json grades ${others}")
+endif()
 if(n EQUAL 0 OR NOT json MATCHES "\"score\": ${total},")
   message(FATAL_ERROR "results.json should grade chapter 01's solution at its ${total} points over ${n} cases:\n${json}")
 endif()

@@ -1,0 +1,20 @@
+# Ninja holds a command's output until the command ends, unless the command runs in its console
+# pool (USES_TERMINAL): every figure's render must, so that its progress line shows as it draws.
+#   cmake -D NINJA_FILE=<build>/build.ninja -P figures_on_the_terminal.cmake
+file(READ "${NINJA_FILE}" ninja)
+string(REGEX MATCHALL "\nbuild [^\n]*/[0-9][0-9]_[a-z_]+\\.png: CUSTOM_COMMAND[^\n]*\n(  [^\n]*\n)*" renders "${ninja}")
+list(LENGTH renders n)
+if(n EQUAL 0)
+  message(FATAL_ERROR "${NINJA_FILE} has no figure render (build .../NN_name.png: CUSTOM_COMMAND): this test would prove nothing")
+endif()
+set(held "")
+foreach(render IN LISTS renders)
+  if(NOT render MATCHES "\n  pool = console\n")
+    string(REGEX MATCH "[^/ ]+\\.png" figure "${render}")
+    list(APPEND held "${figure}")
+  endif()
+endforeach()
+if(held)
+  message(FATAL_ERROR "these figures render outside Ninja's console pool, their progress held until they end: ${held}")
+endif()
+message(STATUS "${n} figure renders, each in Ninja's console pool")
