@@ -57,36 +57,32 @@ LitScene one_triangle(const Triangle& tri)
     return scene;
 }
 
+// Every ray from `eye` toward the floor of `tri` (y = 0) hits it where it is.
+void check_floor_drawn(const Triangle& tri, const point3& eye, float farthest)
+{
+    const FloorRays r = rays_at_floor(one_triangle(tri), tri, eye, 0.5f * eye.y, farthest);
+    INFO("the eye at " << show(eye) << ": " << r.misses << " of 2000 rays toward the floor missed it, " << r.far_off
+                       << " hit it far from where it is; the first: " << r.first);
+    CHECK(r.misses == 0);
+    CHECK(r.far_off == 0);
+}
+
 }  // namespace
 
 TEST_CASE("a floor 1e9 across is drawn from 1e-3 above it, a ratio of 1e12", "[structures]")
 {
     // The float test's t for a ray that meets the floor a hair from the eye can round to -0 or below;
     // double must still be asked there, since the floor is certainly in front.
-    const Triangle tri{{-1e9f, 0, 1e9f}, {1e9f, 0, 1e9f}, {0, 0, -1e9f}};
-    const LitScene floor = one_triangle(tri);
-    for (const float height : {1e-3f, 1e-2f, 1.0f}) {
-        const FloorRays r = rays_at_floor(floor, tri, point3(0, height, 0), 0.5f * height, 1e8f);
-        INFO("the eye " << height << " above the floor: " << r.misses << " of 2000 rays toward it missed it, "
-                        << r.far_off << " hit it far from where it is; the first: " << r.first);
-        CHECK(r.misses == 0);
-        CHECK(r.far_off == 0);
-    }
+    for (const float height : {1e-3f, 1e-2f, 1.0f})
+        check_floor_drawn({{-1e9f, 0, 1e9f}, {1e9f, 0, 1e9f}, {0, 0, -1e9f}}, point3(0, height, 0), 1e8f);
 }
 
 TEST_CASE("a floor under an eye 4e6 from the origin and 1 above it is drawn", "[structures]")
 {
     // The eye as given is exact: rounding of its coordinates (2^-23 of 4e6 is 0.5) cannot move it
     // across the floor, so nothing sized on those coordinates may refuse the floor's hits.
-    const Triangle tri{{-1e7f, 0, 1e7f}, {1e7f, 0, 1e7f}, {0, 0, -1e7f}};
-    const LitScene floor = one_triangle(tri);
-    for (const float height : {1.0f, 0.25f, 4.0f}) {
-        const FloorRays r = rays_at_floor(floor, tri, point3(4e6f, height, 0), 0.5f * height, 5e5f);
-        INFO("the eye (4e6, " << height << ", 0): " << r.misses << " of 2000 rays toward the floor missed it, "
-                              << r.far_off << " hit it far from where it is; the first: " << r.first);
-        CHECK(r.misses == 0);
-        CHECK(r.far_off == 0);
-    }
+    for (const float height : {1.0f, 0.25f, 4.0f})
+        check_floor_drawn({{-1e7f, 0, 1e7f}, {1e7f, 0, 1e7f}, {0, 0, -1e7f}}, point3(4e6f, height, 0), 5e5f);
 }
 
 TEST_CASE("a ground tilted off the axes, 1e4 to 1e6 across through the origin, casts no shadow on itself", "[structures]")
