@@ -121,25 +121,36 @@ std::string bits(const std::optional<TriangleHit<float>>& hit)
     return s.str();
 }
 
-// What differs first between two answers, in words.
-std::string first_difference(const std::optional<TriangleHit<float>>& got, const std::optional<TriangleHit<float>>& want)
+// What differs first between an answer and the lesson's steps, in words: the likeliest cause, and
+// whether double applies on this ray (an edge function exactly 0 in float) or not. The formula is the
+// lesson's, not the message's.
+std::string first_difference(const std::optional<TriangleHit<float>>& got, const WatertightSteps& want)
 {
-    if (got.has_value() != want.has_value())
-        return got ? "a hit where the edge functions recomputed in double put the ray outside"
-                   : "no hit where the edge functions recomputed in double put the ray inside";
+    if (got.has_value() != want.hit.has_value()) {
+        if (want.fell_back)
+            return got ? "a hit where the edge functions, taken again in double (one is 0 in float here), put the ray outside"
+                       : "no hit where the edge functions, taken again in double (one is 0 in float here), put the ray inside";
+        return got ? "a hit where the float edge functions differ in sign (none is 0 here, so double does not apply)"
+                   : "no hit where the float edge functions agree in sign (none is 0 here, so double does not apply)";
+    }
     if (!got)
         return "";
-    if (!same_bits(got->beta, want->beta) || !same_bits(got->gamma, want->gamma))
-        return "beta or gamma (V / det, W / det) differs in its last bits: are all three edge functions recomputed "
-               "in double and rounded to float before det = U + V + W?";
-    if (!same_bits(got->t, want->t))
-        return "t differs in its last bits: t = (U (Sz A_z) + V (Sz B_z) + W (Sz C_z)) / det, from the float U, V, W";
+    if (!same_bits(got->beta, want.hit->beta) || !same_bits(got->gamma, want.hit->gamma))
+        return want.fell_back ? "beta or gamma differs in its last bits: an edge function is 0 in float here, so all "
+                                "three are taken again in double and rounded to float before det is summed"
+                              : "beta or gamma differs in its last bits: no edge function is 0 here, so the float ones "
+                                "stand; is each divided by det (a product with 1 / det rounds differently)?";
+    if (!same_bits(got->t, want.hit->t))
+        return "t differs in its last bits: is it summed in the lesson's order and divided by det (a product with "
+               "1 / det rounds differently)?";
     return "";
 }
 
 bool same_answer(const std::optional<TriangleHit<float>>& a, const std::optional<TriangleHit<float>>& b)
 {
-    return first_difference(a, b).empty();
+    if (a.has_value() != b.has_value())
+        return false;
+    return !a || (same_bits(a->t, b->t) && same_bits(a->beta, b->beta) && same_bits(a->gamma, b->gamma));
 }
 
 // Calls check(ray, tri, want) for each ray aimed exactly at a shared vertex or edge of a jittered
@@ -176,7 +187,7 @@ GRADED_TEST("hit_triangle_watertight: an edge function that rounds to 0 in float
         INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": the edge functions in float have U = 0; recomputed in double "
              << "and rounded to float, U = " << want.U << ", V = " << want.V << ", W = " << want.W << ", so the ray is "
              << (want.hit ? "inside" : "outside") << ".\n  got " << bits(got) << "\n  expected " << bits(want.hit)
-             << "\n  " << first_difference(got, want.hit));
+             << "\n  " << first_difference(got, want));
         REQUIRE(want.fell_back);
         CHECK(same_answer(got, want.hit));
     }
@@ -194,7 +205,7 @@ STABILITY_TEST("hit_triangle_watertight: wherever an edge function is 0 in float
         const std::optional<TriangleHit<float>> got = hit_triangle_watertight<float>(ray, tri, Interval{});
         INFO(triangles::query(ray, tri, Interval{}) << std::hexfloat << ": an edge function is 0 in float; recomputed in "
              << "double and rounded to float, U = " << want.U << ", V = " << want.V << ", W = " << want.W
-             << ".\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  " << first_difference(got, want.hit));
+             << ".\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  " << first_difference(got, want));
         REQUIRE(same_answer(got, want.hit));
     });
     INFO(fell_back << " tests took the double recomputation");
@@ -222,7 +233,7 @@ STABILITY_TEST("hit_triangle_watertight: where no edge function is 0 in float, U
              << (same_answer(got, watertight_steps(ray, tri, Interval{}, {true, false}).hit) && !same_answer(got, want.hit)
                      ? "that is the answer of U, V and W recomputed in double: only an edge function that is 0 "
                        "in float is recomputed"
-                     : first_difference(got, want.hit)));
+                     : first_difference(got, want)));
         REQUIRE(same_answer(got, want.hit));
     });
     INFO(in_float << " tests stayed in float; in " << telling << " of them a double recomputation changes the answer");
@@ -253,7 +264,7 @@ GRADED_TEST("hit_triangle_watertight: on a tie of v's largest components the fra
                  << "axis of the tie.\n  got " << bits(got) << "\n  expected " << bits(want.hit) << "\n  "
                  << (same_answer(got, watertight_steps(ray, tri, Interval{}, {false, true}).hit)
                          ? "that is the answer of the earlier axis's frame: on a tie take the later axis (z before y, y before x)"
-                         : first_difference(got, want.hit)));
+                         : first_difference(got, want)));
             REQUIRE(same_answer(got, want.hit));
         }
     }
