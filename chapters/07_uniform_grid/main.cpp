@@ -37,7 +37,9 @@ SceneProgram scene_program(const Options& o)
             ch07::figure_scene,
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return ch07::make_accelerator(o.accel, objects, o.lambda); },
+            [&o](const Objects& objects) {
+                return structure_named(ch07::structures(), o.accel).make(objects, at_density(o.lambda));
+            },
             [&o] { return o.accel; },
             {{"cells_visited", Counter::cells_visited}},
             {}};
@@ -63,7 +65,9 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, co
     GridStats grid;
     const StructureMaker make =
         accel == "grid" ? keeping_stats<UniformGrid>(grid, lambda)
-                        : [&](const Objects& objects) { return ch07::make_accelerator(accel, objects, lambda); };
+                        : [&](const Objects& objects) {
+                              return structure_named(ch07::structures(), accel).make(objects, at_density(lambda));
+                          };
     const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : runs, runs);
     Measured m;
     m.grid = grid;
@@ -245,16 +249,13 @@ int main(int argc, char** argv)
             o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
-        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
+        cli.option("--accel", o.accel, accel_help(ch07::structures()));
+        cli.option("--lambda", o.lambda, lambda_help(ch07::structures()), 0.0f, 1e5f);
         add_sweep_options(cli, o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade",
                           "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        if (o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
-        if (o.accel == "brute" && cli.given("--lambda"))
-            throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
+        check_structure_options(ch07::structures(), structure_named(ch07::structures(), o.accel), cli);
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

@@ -3,7 +3,7 @@
 // intersection tests per pixel.
 #pragma once
 
-#include "07_uniform_grid/figure.hpp"
+#include "08_mailboxing/figure.hpp"
 #include "09_hashed_voxels/hashed_grid.hpp"
 
 #include <memory>
@@ -27,15 +27,14 @@ inline NffScene figure_scene()
     return generated_scene(write_stadium, figure_stadium_depth, "teapot in a stadium, depth 5");
 }
 
-// The accelerator by name (--accel): brute force (none), the dense grid or the hashed one.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda,
-                                                     std::uint32_t table_size)
+// Chapter 08's structures and the hashed grid (programs/structures.hpp).
+inline Structures structures()
 {
-    if (name == "hashed")
-        return std::make_unique<HashedGrid>(objects, lambda, table_size);
-    if (name == "grid" || name == "brute")
-        return ch07::make_accelerator(name, objects, lambda);
-    throw InputError("--accel takes hashed, grid or brute, got '" + name + "'");
+    return followed_by(ch08::structures(),
+                       {{"hashed", "the hashed grid, its occupied cells in a hash table", 9, default_hashed_lambda,
+                         {"--lambda", "--table-size"}, [](const Objects& o, const StructureTuning& t) {
+                             return std::make_unique<HashedGrid>(o, t.lambda, t.table_size);
+                         }}});
 }
 
 // The figure's scene through the hashed grid; with `cost`, what each pixel cost.

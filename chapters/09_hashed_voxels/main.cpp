@@ -24,10 +24,18 @@ struct Options {
     CommonOptions common;
     SceneOptions scene;
     std::string accel = "hashed";
-    float lambda = ch09::default_hashed_lambda;
+    float lambda = 0.0f;  // given: cells per object; 0: the structure's default
     int table_size = 0;
     SweepOptions sweep{false, 5, "09_hashed_voxels.csv"};
 };
+
+StructureTuning tuning(float lambda, std::uint32_t table_size)
+{
+    StructureTuning t;
+    t.lambda = lambda;
+    t.table_size = table_size;
+    return t;
+}
 
 SceneProgram scene_program(const Options& o)
 {
@@ -37,7 +45,8 @@ SceneProgram scene_program(const Options& o)
              {"cells", Counter::cells_visited, "cells visited per pixel"},
              {"lookups", Counter::table_lookups, "table lookups per pixel"}},
             [&o](const Objects& objects) {
-                return ch09::make_accelerator(o.accel, objects, o.lambda, static_cast<std::uint32_t>(o.table_size));
+                return structure_named(ch09::structures(), o.accel)
+                    .make(objects, tuning(o.lambda, static_cast<std::uint32_t>(o.table_size)));
             },
             [&o] { return o.accel; },
             {{"cells_visited", Counter::cells_visited},
@@ -68,7 +77,9 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, st
         accel == "hashed" ? keeping_stats<HashedGrid>(hashed, lambda, table_size)
         : accel == "grid"
             ? keeping_stats<UniformGrid>(grid, lambda)
-            : [&](const Objects& objects) { return ch09::make_accelerator(accel, objects, lambda, table_size); };
+            : [&](const Objects& objects) {
+                  return structure_named(ch09::structures(), accel).make(objects, tuning(lambda, table_size));
+              };
     const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : repeat, repeat);
     Measured m;
     m.structure = accel;
@@ -188,22 +199,15 @@ int main(int argc, char** argv)
             o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: hashed, grid (dense, chapter 07) or brute");
-        cli.option("--lambda", o.lambda, "cells per object (256 for the hashed grid, 4 for the dense one by default)",
+        cli.option("--accel", o.accel, accel_help(ch09::structures()));
+        cli.option("--lambda", o.lambda, lambda_help(ch09::structures()),
                    0.0f, 1e6f);
         cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
                    "occupied cells)", 0, 1 << 30);
         add_sweep_options(cli, o.sweep, "measure the hashed grid against the dense one, and the table size");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        if (o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes hashed, grid or brute, got '" + o.accel + "'");
-        if (o.accel == "grid" && !cli.given("--lambda"))
-            o.lambda = ch07::default_lambda;
-        if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--table-size")))
-            throw InputError("--lambda and --table-size set up a grid; they do not apply to --accel brute");
-        if (o.accel != "hashed" && cli.given("--table-size"))
-            throw InputError("--table-size sizes the hashed grid's table; it applies to --accel hashed only");
+        check_structure_options(ch09::structures(), structure_named(ch09::structures(), o.accel), cli);
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

@@ -3,10 +3,8 @@
 // chapters 07-10 must build them within its budgets and answer every seeded ray as brute force does
 // (object and t), without testing many times more objects than brute force; the hashed grid must
 // say when its build holds many times the dense grid's memory (memory_weighed.hpp).
-#include "08_mailboxing/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "10_hierarchies/figure.hpp"
-#include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
 #include "tests/structures/memory_weighed.hpp"
 
@@ -19,25 +17,13 @@ using namespace rt::grader;
 
 namespace {
 
-struct Structure {
-    std::string name;
-    float lambda;
-    agreement::BuildFn build;
-};
+// Every structure of the registry (programs/structures.hpp) but brute force, the reference.
+Structures structures() { return beside_brute_force(ch10::structures()); }
 
-std::vector<Structure> structures()
+// How agreement::compare builds `s` at a density.
+agreement::BuildFn built_at(const Structure& s)
 {
-    return {
-        {"grid", ch07::default_lambda, [](const Objects& o, float l) { return ch07::make_accelerator("grid", o, l); }},
-        {"grid with mailboxes", ch07::default_lambda,
-         [](const Objects& o, float l) { return ch08::make_accelerator("grid", true, o, l); }},
-        {"hashed grid", ch09::default_hashed_lambda,
-         [](const Objects& o, float l) { return ch09::make_accelerator("hashed", o, l, 0); }},
-        {"hierarchy of grids", ch07::default_lambda,
-         [](const Objects& o, float l) { return std::make_unique<HGridAccel>(o, HGridSettings{l}); }},
-        {"BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<BvhAccel>(o, BvhSettings{}); }},
-        {"4-wide BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<WideBvhAccel>(o); }},
-    };
+    return [s](const Objects& objects, float lambda) { return s.make(objects, at_density(lambda)); };
 }
 
 // Why 1 GB: the most a structure may take for a scene below 100k objects, whatever its shape.
@@ -56,7 +42,7 @@ std::unique_ptr<Accelerator> built_saying(const Structure& s, const Objects& obj
     std::vector<std::string> said;
     {
         const NoticeCapture capture;
-        built = s.build(objects, lambda);
+        built = s.make(objects, at_density(lambda));
         said = capture.lines();
     }
     if (const auto* hashed = dynamic_cast<const HashedGrid*>(built.get()))
@@ -84,16 +70,16 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
 {
     const Objects objects = objects_of(scene, lit_tests);
     for (const Structure& s : structures()) {
-        INFO(scene_name << " (" << objects.size() << " objects) through the " << s.name);
+        INFO(scene_name << " (" << objects.size() << " objects) through " << s.name << " (" << s.what << ")");
         // Brute force's work on the rays, then the structure's, from the counters.
         reset_counters();
         agreement::Disagreement brute_d;
-        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene, view, s.lambda,
+        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene, view, s.default_lambda,
                            rays, 7, brute_d);
         const std::uint64_t both_brute = counted(total_counts(), Counter::intersection_tests);
         reset_counters();
         agreement::Disagreement d;
-        agreement::compare({"the " + s.name, s.build}, scene, view, s.lambda, rays, 7, d);
+        agreement::compare({s.name, built_at(s)}, scene, view, s.default_lambda, rays, 7, d);
         const std::uint64_t with_structure = counted(total_counts(), Counter::intersection_tests);
         // compare() asks brute force too: the structure's own tests are the difference.
         const double brute_tests = static_cast<double>(both_brute) / 2.0;
@@ -104,7 +90,7 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
         INFO("tests: brute force " << brute_tests << ", the structure " << structure_tests << " (at most " << bound.times
                                    << " times brute force's, and " << bound.per_ray << " a ray more)");
         CHECK(structure_tests <= bound.times * brute_tests + bound.per_ray * d.rays);
-        const std::unique_ptr<Accelerator> built = built_saying(s, objects, s.lambda);
+        const std::unique_ptr<Accelerator> built = built_saying(s, objects, s.default_lambda);
         INFO("bytes: " << built->bytes());
         CHECK(built->bytes() <= max_bytes);
     }
@@ -137,7 +123,7 @@ void check_ray(const LitScene& scene, const Ray& ray, float lambda)
             const std::unique_ptr<Accelerator> built = built_saying(s, objects, lambda);
             ObjectHit got;
             const bool got_found = built->closest(ray, range, objects, got);
-            INFO("the " << s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
+            INFO(s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
                  << "): brute force finds " << agreement::answer(want_found, want) << ", the structure "
                  << agreement::answer(got_found, got));
             CHECK(got_found == want_found);
@@ -430,7 +416,7 @@ TEST_CASE("a dense cluster beside one far sphere costs every structure no more t
     view.from = point3(0.004f, 0.006f, 0.025f);
     view.at = point3(0.0f);
     check("a cluster 0.01 across beside a sphere at x = 1000", cluster, view, 40, [](const std::string& structure) {
-        return WorkBound{structure == "BVH" || structure == "4-wide BVH" ? 0.1 : 1.0, 0.0};
+        return WorkBound{structure == "bvh" || structure == "bvh4" ? 0.1 : 1.0, 0.0};
     });
 }
 
@@ -452,6 +438,6 @@ TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hi
     view.from = point3(0, 2.5f, 3);
     view.at = point3(0, -0.5f, 0);
     check("a triangle 2e5 across over 5,000 triangles 1e-3 across", huge, view, 200, [](const std::string& structure) {
-        return structure == "hierarchy of grids" ? WorkBound{1.0, 0.0} : WorkBound{};
+        return structure == "hgrid" ? WorkBound{1.0, 0.0} : WorkBound{};
     });
 }
