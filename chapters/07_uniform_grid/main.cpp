@@ -26,8 +26,7 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "grid";
-    float lambda = ch07::default_lambda;
+    StructureChoice structure{ch07::structures(), "grid", at_density(ch07::default_lambda)};
     SweepOptions sweep{false, 5, "07_uniform_grid.csv"};
 };
 
@@ -37,10 +36,8 @@ SceneProgram scene_program(const Options& o)
             ch07::figure_scene,
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) {
-                return structure_named(ch07::structures(), o.accel).make(objects, at_density(o.lambda));
-            },
-            [&o] { return o.accel; },
+            [&o](const Objects& objects) { return o.structure.make(objects); },
+            [&o] { return o.structure.accel; },
             {{"cells_visited", Counter::cells_visited}},
             {}};
 }
@@ -141,8 +138,9 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
 {
     // Brute force on the largest scenes takes minutes a render: one run there, said in the caption.
     const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.sweep.repeat;
-    const Measured brute = measure(nff, "brute", o.lambda, settings, brute_runs);
-    const Measured grid = measure(nff, "grid", o.lambda, settings, o.sweep.repeat);
+    const float lambda = o.structure.tuning.lambda;
+    const Measured brute = measure(nff, "brute", lambda, settings, brute_runs);
+    const Measured grid = measure(nff, "grid", lambda, settings, o.sweep.repeat);
     if (brute.pixels != grid.pixels || brute.rays != grid.rays)
         throw std::runtime_error("the grid's image or ray count differs from brute force's on " + nff.name +
                                  ": a bug of the kit");
@@ -220,7 +218,7 @@ void sweep(const Options& o, const CommandLine& cli)
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
     std::ofstream n_csv = open_csv(csv_beside(o.sweep.csv, "_n"), comparison_header);
     std::ostringstream what;
-    what << "Brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
+    what << "Brute force against the grid as the mountain grows (lambda " << o.structure.tuning.lambda << ")";
     LessonTable growth = comparison_table("07.growth", what.str(), settings, o.sweep.repeat);
     for (int depth = 1; depth <= 8; ++depth)
         compare_on(generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
@@ -249,13 +247,12 @@ int main(int argc, char** argv)
             o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, accel_help(ch07::structures()));
-        cli.option("--lambda", o.lambda, lambda_help(ch07::structures()), 0.0f, 1e5f);
+        o.structure.add_options(cli, 1e5f);
         add_sweep_options(cli, o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade",
                           "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        check_structure_options(ch07::structures(), structure_named(ch07::structures(), o.accel), cli);
+        o.structure.chosen(cli);
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

@@ -25,8 +25,7 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "grid-mailbox";
-    float lambda = ch07::default_lambda;
+    StructureChoice structure{ch08::structures(), "grid-mailbox"};
     SweepOptions sweep{false, 9, "08_mailboxing.csv"};
 };
 
@@ -37,10 +36,8 @@ SceneProgram scene_program(const Options& o)
             {{"saved", Counter::mailbox_hits, "tests answered by mailboxes per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) {
-                return structure_named(ch08::structures(), o.accel).make(objects, at_density(o.lambda));
-            },
-            [&o] { return o.accel; },
+            [&o](const Objects& objects) { return o.structure.make(objects); },
+            [&o] { return o.structure.accel; },
             {{"cells_visited", Counter::cells_visited}, {"tests_answered_by_mailboxes", Counter::mailbox_hits}},
             {}};
 }
@@ -210,12 +207,11 @@ int main(int argc, char** argv)
             "08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.", o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, accel_help(ch08::structures()));
-        cli.option("--lambda", o.lambda, lambda_help(ch08::structures()), 0.0f, 1e5f);
+        o.structure.add_options(cli, 1e5f);
         add_sweep_options(cli, o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        check_structure_options(ch08::structures(), structure_named(ch08::structures(), o.accel), cli);
+        o.structure.chosen(cli);
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

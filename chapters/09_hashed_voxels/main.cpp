@@ -23,9 +23,8 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "hashed";
-    float lambda = 0.0f;  // given: cells per object; 0: the structure's default
-    int table_size = 0;
+    StructureChoice structure{ch09::structures(), "hashed"};
+    int table_size = 0;  // the tuning's table_size, read as an int
     SweepOptions sweep{false, 5, "09_hashed_voxels.csv"};
 };
 
@@ -44,11 +43,8 @@ SceneProgram scene_program(const Options& o)
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"},
              {"lookups", Counter::table_lookups, "table lookups per pixel"}},
-            [&o](const Objects& objects) {
-                return structure_named(ch09::structures(), o.accel)
-                    .make(objects, tuning(o.lambda, static_cast<std::uint32_t>(o.table_size)));
-            },
-            [&o] { return o.accel; },
+            [&o](const Objects& objects) { return o.structure.make(objects); },
+            [&o] { return o.structure.accel; },
             {{"cells_visited", Counter::cells_visited},
              {"table_lookups", Counter::table_lookups},
              {"table_lookups_skipped", Counter::table_lookups_skipped}},
@@ -199,15 +195,14 @@ int main(int argc, char** argv)
             o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, accel_help(ch09::structures()));
-        cli.option("--lambda", o.lambda, lambda_help(ch09::structures()),
-                   0.0f, 1e6f);
+        o.structure.add_options(cli, 1e6f);
         cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
                    "occupied cells)", 0, 1 << 30);
         add_sweep_options(cli, o.sweep, "measure the hashed grid against the dense one, and the table size");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        check_structure_options(ch09::structures(), structure_named(ch09::structures(), o.accel), cli);
+        o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
+        o.structure.chosen(cli);
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

@@ -24,8 +24,7 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "bvh";
-    StructureTuning tuning;  // what the options set: lambda, leaf size, depth and split
+    StructureChoice structure{ch10::structures(), "bvh"};  // its tuning: lambda, leaf size, depth and split
     SweepOptions sweep{false, 5, "10_hierarchies.csv"};
 };
 
@@ -39,8 +38,8 @@ SceneProgram scene_program(const Options& o)
             {{"nodes", Counter::nodes_visited, "nodes visited per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return structure_named(ch10::structures(), o.accel).make(objects, o.tuning); },
-            [&o] { return o.accel; },
+            [&o](const Objects& objects) { return o.structure.make(objects); },
+            [&o] { return o.structure.accel; },
             {{"nodes_visited", Counter::nodes_visited}, {"cells_visited", Counter::cells_visited}},
             {{"uniform grid", default_structure("grid")},
              {"hierarchy of grids", default_structure("hgrid")},
@@ -167,7 +166,7 @@ LessonTable sweep_structures(Sweep& w)
         std::vector<std::uint8_t> same;
         const std::string objects = grouped(Sweep::objects_in(nff));
         for (const std::string name : {"bvh", "hgrid", "grid", "hashed"}) {
-            const Structure& structure = structure_named(ch10::structures(), name);
+            const Structure structure = structure_named(ch10::structures(), name);
             const auto make = [&](const Objects& objs) { return structure.make(objs); };
             Measurement m;
             try {
@@ -223,28 +222,26 @@ int main(int argc, char** argv)
             o.common);
         const SceneProgram program = scene_program(o);
         add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, accel_help(ch10::structures()));
-        cli.option("--lambda", o.tuning.lambda, lambda_help(ch10::structures()), 0.0f,
-                   1e6f);
-        cli.option("--leaf-size", o.tuning.leaf_size,
+        o.structure.add_options(cli, 1e6f);
+        cli.option("--leaf-size", o.structure.tuning.leaf_size,
                    "a BVH node of at most this many objects is a leaf (default 4; a larger one is too at the depth "
                    "limit or when no split pays); in the hierarchy of grids, the most a cell lists before it gets a "
                    "grid of its own (default 8)",
                    1, 65535);
-        cli.option("--max-depth", o.tuning.max_depth,
+        cli.option("--max-depth", o.structure.tuning.max_depth,
                    "the deepest a BVH leaf may lie (default 48), or a grid of the hierarchy of grids (default 2); "
                    "the root is 0",
                    0, bvh_stack_size - 2);
-        cli.option("--split", o.tuning.split, "how a BVH node is split: sah (the surface area heuristic) or median");
+        cli.option("--split", o.structure.tuning.split, "how a BVH node is split: sah (the surface area heuristic) or median");
         add_sweep_options(cli, o.sweep, "measure leaf size, depth and split, and every structure side by side");
         if (!cli.parse(argc, argv, std::cout))
             return 0;
-        check_structure_options(ch10::structures(), structure_named(ch10::structures(), o.accel), cli);
-        if (cli.given("--split") && o.tuning.split != "sah" && o.tuning.split != "median")
-            throw InputError("--split takes sah or median, got '" + o.tuning.split + "'");
-        if (o.accel == "hgrid" && o.tuning.max_depth > HGridAccel::max_hgrid_depth)
+        o.structure.chosen(cli);
+        if (cli.given("--split") && o.structure.tuning.split != "sah" && o.structure.tuning.split != "median")
+            throw InputError("--split takes sah or median, got '" + o.structure.tuning.split + "'");
+        if (o.structure.accel == "hgrid" && o.structure.tuning.max_depth > HGridAccel::max_hgrid_depth)
             throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
-                             std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.tuning.max_depth));
+                             std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.structure.tuning.max_depth));
         return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
     });
 }

@@ -150,4 +150,32 @@ inline void check_structure_options(const Structures& list, const Structure& cho
                                  "; it does not apply to --accel " + chosen.name);
 }
 
+// What a program's --accel and --lambda choose from its chapter's list, with what its other options
+// set in `tuning`: the structure the program builds for a scene.
+struct StructureChoice {
+    Structures list;
+    std::string accel;
+    StructureTuning tuning = {};
+
+    // --accel and --lambda, their help from the list; a density above `most_lambda` is bad input.
+    void add_options(CommandLine& cli, float most_lambda)
+    {
+        cli.option("--accel", accel, accel_help(list));
+        cli.option("--lambda", tuning.lambda, lambda_help(list), 0.0f, most_lambda);
+    }
+
+    // After the parse: the structure named, with every option given one that it takes.
+    const Structure& chosen(const CommandLine& cli) const
+    {
+        const Structure& s = structure_named(list, accel);
+        check_structure_options(list, s, cli);
+        return s;
+    }
+
+    std::unique_ptr<Accelerator> make(const Objects& objects) const
+    {
+        return structure_named(list, accel).make(objects, tuning);
+    }
+};
+
 }  // namespace rt

@@ -103,6 +103,16 @@ LitScene with_material()
     return scene;
 }
 
+// A point drawn uniformly from `low` to `low + size` on each axis, x, y and z in that order. One draw
+// a statement: a constructor's arguments are evaluated in an order each compiler picks.
+vec3 drawn(Rng& rng, const vec3& low, const vec3& size)
+{
+    const float x = size.x * rng.next_float() + low.x;
+    const float y = size.y * rng.next_float() + low.y;
+    const float z = size.z * rng.next_float() + low.z;
+    return vec3(x, y, z);
+}
+
 NffView looking_at(const point3& at, float distance)
 {
     NffView view;
@@ -310,13 +320,8 @@ TEST_CASE("300 spheres 100 across, 1e7 from the origin, build cells no finer tha
     // steps (9.5 units) spread over cells 2 units wide.
     LitScene far = with_material();
     Rng rng(9, 0);
-    for (int k = 0; k < 300; ++k) {
-        // One draw a statement: a constructor's arguments are evaluated in an order each compiler picks.
-        const float x = 100 * rng.next_float() - 50;
-        const float y = 100 * rng.next_float() - 50;
-        const float z = 100 * rng.next_float() - 50;
-        far.add_sphere({point3(1e7f) + vec3(x, y, z), 2.0f}, 0);
-    }
+    for (int k = 0; k < 300; ++k)
+        far.add_sphere({point3(1e7f) + drawn(rng, vec3(-50), vec3(100)), 2.0f}, 0);
     check("300 spheres 1e7 from the origin", far, looking_at(point3(1e7f), 250.0f), 200);
     const Objects objects = objects_of(far, lit_tests);
     const HashedGridStats stats = HashedGrid(objects, ch09::default_hashed_lambda).stats();
@@ -404,13 +409,8 @@ TEST_CASE("a dense cluster beside one far sphere costs every structure no more t
     // it apart, and every structure would test about twice brute force's objects.
     LitScene cluster = with_material();
     Rng rng(43, 0);
-    for (int k = 0; k < 100000; ++k) {
-        // One draw a statement (argument order is each compiler's choice).
-        const float x = 0.01f * rng.next_float() - 0.005f;
-        const float y = 0.01f * rng.next_float() - 0.005f;
-        const float z = 0.01f * rng.next_float() - 0.005f;
-        cluster.add_sphere({{x, y, z}, 2e-4f}, 0);
-    }
+    for (int k = 0; k < 100000; ++k)
+        cluster.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
     cluster.add_sphere({{1000, 0, 0}, 1}, 0);
     NffView view;
     view.from = point3(0.004f, 0.006f, 0.025f);
@@ -429,9 +429,8 @@ TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hi
     huge.add_triangle({{-1e5f, -1, -1e5f}, {0, -1, 1e5f}, {1e5f, -1, -1e5f}}, 0);
     Rng rng(44, 0);
     for (int k = 0; k < 5000; ++k) {
-        const float x = 2 * rng.next_float() - 1;
-        const float y = 1.9f * rng.next_float() - 0.9f;
-        const float z = 2 * rng.next_float() - 1;
+        const vec3 p = drawn(rng, vec3(-1, -0.9f, -1), vec3(2, 1.9f, 2));
+        const float x = p.x, y = p.y, z = p.z;
         huge.add_triangle({{x, y, z}, {x + 1e-3f, y, z}, {x, y + 1e-3f, z + 4e-4f}}, 0);
     }
     NffView view;
