@@ -36,8 +36,7 @@ SceneProgram scene_program(const Options& o)
             {{"saved", Counter::mailbox_hits, "tests answered by mailboxes per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return o.structure.make(objects); },
-            [&o] { return o.structure.accel; },
+            &o.structure,
             {{"cells_visited", Counter::cells_visited}, {"tests_answered_by_mailboxes", Counter::mailbox_hits}},
             {}};
 }
@@ -203,15 +202,10 @@ int main(int argc, char** argv)
 {
     return run_program("08_mailboxing", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.", o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        o.structure.add_options(cli, 1e5f);
-        add_sweep_options(cli, o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        o.structure.chosen(cli);
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Mailboxing: an object met again in a later cell is answered from its mailbox.",
+             "measure the tests and time the mailboxes save, by density and ray kind"},
+            1e5f, {}, {}, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

@@ -43,8 +43,7 @@ SceneProgram scene_program(const Options& o)
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"},
              {"lookups", Counter::table_lookups, "table lookups per pixel"}},
-            [&o](const Objects& objects) { return o.structure.make(objects); },
-            [&o] { return o.structure.accel; },
+            &o.structure,
             {{"cells_visited", Counter::cells_visited},
              {"table_lookups", Counter::table_lookups},
              {"table_lookups_skipped", Counter::table_lookups_skipped}},
@@ -190,19 +189,17 @@ int main(int argc, char** argv)
 {
     return run_program("09_hashed_voxels", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "09_hashed_voxels", "Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.",
-            o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        o.structure.add_options(cli, 1e6f);
-        cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
-                   "occupied cells)", 0, 1 << 30);
-        add_sweep_options(cli, o.sweep, "measure the hashed grid against the dense one, and the table size");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
-        o.structure.chosen(cli);
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        const auto table_size = [&](CommandLine& cli) {
+            cli.option("--table-size", o.table_size,
+                       "the hash table's size M (0: the least prime at least twice the occupied cells)", 0, 1 << 30);
+        };
+        const auto take_table_size = [&](const CommandLine&) {
+            o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
+        };
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.",
+             "measure the hashed grid against the dense one, and the table size"},
+            1e6f, table_size, take_table_size, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

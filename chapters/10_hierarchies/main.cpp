@@ -38,8 +38,7 @@ SceneProgram scene_program(const Options& o)
             {{"nodes", Counter::nodes_visited, "nodes visited per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return o.structure.make(objects); },
-            [&o] { return o.structure.accel; },
+            &o.structure,
             {{"nodes_visited", Counter::nodes_visited}, {"cells_visited", Counter::cells_visited}},
             {{"uniform grid", default_structure("grid")},
              {"hierarchy of grids", default_structure("hgrid")},
@@ -217,31 +216,30 @@ int main(int argc, char** argv)
 {
     return run_program("10_hierarchies", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "10_hierarchies", "Hierarchies: a bounding volume hierarchy built by the surface area heuristic.",
-            o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        o.structure.add_options(cli, 1e6f);
-        cli.option("--leaf-size", o.structure.tuning.leaf_size,
-                   "a BVH node of at most this many objects is a leaf (default 4; a larger one is too at the depth "
-                   "limit or when no split pays); in the hierarchy of grids, the most a cell lists before it gets a "
-                   "grid of its own (default 8)",
-                   1, 65535);
-        cli.option("--max-depth", o.structure.tuning.max_depth,
-                   "the deepest a BVH leaf may lie (default 48), or a grid of the hierarchy of grids (default 2); "
-                   "the root is 0",
-                   0, bvh_stack_size - 2);
-        cli.option("--split", o.structure.tuning.split, "how a BVH node is split: sah (the surface area heuristic) or median");
-        add_sweep_options(cli, o.sweep, "measure leaf size, depth and split, and every structure side by side");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        o.structure.chosen(cli);
-        if (cli.given("--split") && o.structure.tuning.split != "sah" && o.structure.tuning.split != "median")
-            throw InputError("--split takes sah or median, got '" + o.structure.tuning.split + "'");
-        if (o.structure.accel == "hgrid" && o.structure.tuning.max_depth > HGridAccel::max_hgrid_depth)
-            throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
-                             std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.structure.tuning.max_depth));
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        StructureTuning& t = o.structure.tuning;
+        const auto tree_options = [&](CommandLine& cli) {
+            cli.option("--leaf-size", t.leaf_size,
+                       "a BVH node of at most this many objects is a leaf (default 4; a larger one is too at the "
+                       "depth limit or when no split pays); in the hierarchy of grids, the most a cell lists before "
+                       "it gets a grid of its own (default 8)",
+                       1, 65535);
+            cli.option("--max-depth", t.max_depth,
+                       "the deepest a BVH leaf may lie (default 48), or a grid of the hierarchy of grids (default "
+                       "2); the root is 0",
+                       0, bvh_stack_size - 2);
+            cli.option("--split", t.split, "how a BVH node is split: sah (the surface area heuristic) or median");
+        };
+        const auto check_tree_options = [&](const CommandLine& cli) {
+            if (cli.given("--split") && t.split != "sah" && t.split != "median")
+                throw InputError("--split takes sah or median, got '" + t.split + "'");
+            if (o.structure.accel == "hgrid" && t.max_depth > HGridAccel::max_hgrid_depth)
+                throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
+                                 std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(t.max_depth));
+        };
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Hierarchies: a bounding volume hierarchy built by the surface area heuristic.",
+             "measure leaf size, depth and split, and every structure side by side"},
+            1e6f, tree_options, check_tree_options, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }
