@@ -104,13 +104,14 @@ LessonTable sweep_lambda(const Options& o, const RenderSettings& settings)
         res << m.grid.resolution.x << 'x' << m.grid.resolution.y << 'x' << m.grid.resolution.z;
         const double empty = 100.0 * static_cast<double>(m.grid.empty_cells) / static_cast<double>(m.grid.cells);
         const double refs = static_cast<double>(m.grid.references) / m.objects;
+        const double tests = m.per_ray(Counter::intersection_tests), cells = m.per_ray(Counter::cells_visited);
         table.row({fixed(lambda, 3), res.str(), fixed(empty, 0) + "%", fixed(refs, 2),
-                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.per_ray(Counter::intersection_tests), 1),
-                   fixed(m.per_ray(Counter::cells_visited), 1), ms(m.render_ms)});
+                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(tests, 1), fixed(cells, 1),
+                   ms(m.render_ms)});
         csv << '"' << nff.name << "\"," << m.objects << ',' << lambda << ',' << res.str() << ',' << m.grid.cells << ','
-            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms.median << ',' << m.per_ray(Counter::intersection_tests) << ','
-            << m.per_ray(Counter::cells_visited) << ',' << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ','
-            << m.render_ms.min << ',' << m.render_ms.max << ',' << m.runs << '\n';
+            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms.median << ',' << tests << ',' << cells << ','
+            << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ','
+            << m.render_ms.max << ',' << m.runs << '\n';
     }
     return table;
 }
@@ -130,10 +131,10 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
                                  ": a bug of the kit");
     for (const auto& [name, m] : {std::pair<const char*, const Measured&>{"brute", brute}, {"grid", grid}}) {
         const double speedup = brute.render_ms.median / m.render_ms.median;
-        table.row({nff.name, std::to_string(m.objects), name, fixed(m.per_ray(Counter::intersection_tests), 1), fixed(m.per_ray(Counter::cells_visited), 1),
-                   ms(m.render_ms), ms(m.build_ms), fixed(static_cast<double>(m.bytes) / 1e6, 2),
-                   fixed(speedup, 0) + "x"});
-        csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << m.per_ray(Counter::intersection_tests) << ',' << m.per_ray(Counter::cells_visited)
+        const double tests = m.per_ray(Counter::intersection_tests), cells = m.per_ray(Counter::cells_visited);
+        table.row({nff.name, std::to_string(m.objects), name, fixed(tests, 1), fixed(cells, 1), ms(m.render_ms),
+                   ms(m.build_ms), fixed(static_cast<double>(m.bytes) / 1e6, 2), fixed(speedup, 0) + "x"});
+        csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << tests << ',' << cells
             << ',' << m.render_ms.median << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.runs << ','
             << speedup << ',' << m.render_ms.min << ',' << m.render_ms.max << ',' << m.build_ms.min << ','
             << m.build_ms.max << '\n';

@@ -56,7 +56,8 @@ std::string rate(double v)
     return s.str();
 }
 
-// A structure of the benchmark (the kit's, from its registry, or Embree): its name, and how to build it for a scene with a number of threads
+// A structure of the benchmark (the kit's, from its registry, or Embree): its name, and how to
+// build it for a scene with a number of threads
 // (only Embree builds in parallel; the kit's builds are single-threaded).
 struct Entrant {
     std::string name;

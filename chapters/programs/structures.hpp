@@ -91,8 +91,8 @@ inline Structures followed_by(Structures earlier, std::initializer_list<Structur
 }
 
 // "a, b or c": the names of the structures that pass `keep`, for help and messages.
-inline std::string structure_names(const Structures& list,
-                                   const std::function<bool(const Structure&)>& keep = [](const Structure&) { return true; })
+inline std::string structure_names(
+    const Structures& list, const std::function<bool(const Structure&)>& keep = [](const Structure&) { return true; })
 {
     std::vector<std::string> names;
     for (const Structure& s : list)

@@ -285,7 +285,8 @@ int refresh(const std::vector<fs::path>& tables, const fs::path& kit)
         // The prose's cells, from the tables as they now stand in the lesson.
         const std::vector<Block> now = blocks_of(lesson, out);
         std::vector<Cell> cells = cells_of(lesson, out);
-        for (auto c = cells.rbegin(); c != cells.rend(); ++c) {  // from the end: a line's earlier cells keep their place
+        // From the end, so that a line's earlier cells keep their place.
+        for (auto c = cells.rbegin(); c != cells.rend(); ++c) {
             const Lookup l = look_up(now, *c);
             if (!l.error.empty())
                 std::cout << lesson.string() << ":" << c->line << ": the prose's cell " << c->table << " [" << c->key

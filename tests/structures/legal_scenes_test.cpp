@@ -74,8 +74,8 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
         // Brute force's work on the rays, then the structure's, from the counters.
         reset_counters();
         agreement::Disagreement brute_d;
-        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene, view, s.default_lambda,
-                           rays, 7, brute_d);
+        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene,
+                           view, s.default_lambda, rays, 7, brute_d);
         const std::uint64_t both_brute = counted(total_counts(), Counter::intersection_tests);
         reset_counters();
         agreement::Disagreement d;

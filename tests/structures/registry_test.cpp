@@ -121,7 +121,9 @@ TEST_CASE("a structure added to the registry reaches --accel, its help, the opti
         CHECK(said.find(" or made-up, got 'kd-tree'") != std::string::npos);
         for (const std::string& name : real) {
             INFO("the name " << name);
-            CHECK((said.find(" " + name + ",") != std::string::npos || said.find(" " + name + " or ") != std::string::npos));
+            const bool listed = said.find(" " + name + ",") != std::string::npos ||
+                                said.find(" " + name + " or ") != std::string::npos;
+            CHECK(listed);
         }
     }
     CHECK(accel_help(list).find("made-up (chapter 11: brute force under another name)") != std::string::npos);
@@ -141,7 +143,8 @@ TEST_CASE("a structure added to the registry reaches --accel, its help, the opti
     }
     REQUIRE(parses(cli, {"registry_test", "--lambda", "3"}));
     CHECK_THROWS_WITH(check_structure_options(list, structure_named(list, "made-up"), cli),
-                      "--lambda shapes " + structure_names(list, [](const Structure& s) { return s.takes("--lambda"); }) +
+                      "--lambda shapes " +
+                          structure_names(list, [](const Structure& s) { return s.takes("--lambda"); }) +
                           "; it does not apply to --accel made-up");
 
     // The legal-scenes test, the fuzzer and the benchmark walk the list: it is there, brute force is not.
