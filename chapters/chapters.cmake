@@ -151,6 +151,17 @@ add_custom_target(lesson_tables_refresh
   COMMENT "Pasting the sweeps' tables and plots into the lessons"
   VERBATIM)
 
+# The path of one ray, drawn (chapters/programs/ray_trip.svg) from the numbered list of
+# chapters/programs/README.md: `--target trip_map_refresh` redraws it after an edit of the list; the
+# test lessons.ray_trip_map_current fails while the drawing is not the list's.
+add_executable(trip_map "${CMAKE_SOURCE_DIR}/tests/lessons/trip_map.cpp")
+add_custom_target(trip_map_refresh
+  COMMAND trip_map write "${CMAKE_SOURCE_DIR}/chapters/programs/README.md"
+    "${CMAKE_SOURCE_DIR}/chapters/programs/ray_trip.svg"
+  DEPENDS trip_map
+  COMMENT "Drawing chapters/programs/ray_trip.svg from the README's list of hops"
+  VERBATIM)
+
 # The kit's NFF scenes (common/scenes/) rendered by every program from chapter 02 on, each with its
 # chapter's features, and by chapter 04's classic NFF mode: `cmake --build <build> --target scenes`
 # writes build/scenes/NN_name-SCENE.png (04_shadow_feelers-classic-SCENE.png for the classic mode).

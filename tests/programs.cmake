@@ -275,8 +275,10 @@ rt_expect_exit(07_uniform_grid.heatmap_written 07_uniform_grid 0 "accel=brute"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 32 --accel brute --heat-of tests --stats
   --heatmap "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat.png"
   --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat_scene.png")
+# --accel's names and the options' checks come from the registry (programs/structures.hpp): each
+# program lists the structures of its chapter and the earlier ones, and no later one.
 rt_expect_exit(07_uniform_grid.unknown_accel 07_uniform_grid 2 "--accel takes brute or grid, got 'kd-tree'" --accel kd-tree)
-rt_expect_exit(07_uniform_grid.lambda_with_brute 07_uniform_grid 2 "--lambda sets the grid's density; it does not apply to --accel brute"
+rt_expect_exit(07_uniform_grid.lambda_with_brute 07_uniform_grid 2 "--lambda shapes grid; it does not apply to --accel brute"
   --accel brute --lambda 3)
 rt_expect_exit(07_uniform_grid.lambda_zero 07_uniform_grid 2 "--lambda must lie strictly between 0 and" --lambda 0)
 rt_expect_exit(07_uniform_grid.lambda_too_dense 07_uniform_grid 2 "cells .* passes the limit of 33554432 cells: choose a smaller lambda"
@@ -287,7 +289,7 @@ rt_expect_exit(07_uniform_grid.classic_without_scene 07_uniform_grid 2 "--classi
 # Chapter 08: the grid with mailboxes renders brute force's picture and rays, and the grid's without
 # them, at 1 and 2 threads; on the kit's scenes and on long thin sticks (many cells per object).
 foreach(scene IN LISTS kit_scenes)
-  rt_same_render(08_mailboxing.mailboxes_as_brute_classic_${scene} 08_mailboxing FIRST --accel brute SECOND --accel grid
+  rt_same_render(08_mailboxing.mailboxes_as_brute_classic_${scene} 08_mailboxing FIRST --accel brute SECOND --accel grid-mailbox
     ARGS --scene "${PROJECT_SOURCE_DIR}/common/scenes/${scene}.nff" --width 48 --classic)
 endforeach()
 foreach(mode plain classic)
@@ -295,21 +297,21 @@ foreach(mode plain classic)
   if(mode STREQUAL "classic")
     set(extra --classic)
   endif()
-  rt_same_render(08_mailboxing.mailboxes_on_off_${mode}_sticks 08_mailboxing FIRST --mailbox off SECOND --mailbox on
+  rt_same_render(08_mailboxing.mailboxes_on_off_${mode}_sticks 08_mailboxing FIRST --accel grid SECOND --accel grid-mailbox
     ARGS --width 64 --lambda 8 ${extra} GENERATE sticks --depth 2)
   rt_same_render(08_mailboxing.mailboxes_threads_${mode}_sticks 08_mailboxing FIRST --threads 1 SECOND --threads 2
     ARGS --width 64 --lambda 8 ${extra} GENERATE sticks --depth 2)
 endforeach()
-rt_same_render(08_mailboxing.mailboxes_as_brute_tree 08_mailboxing FIRST --accel brute SECOND --accel grid
+rt_same_render(08_mailboxing.mailboxes_as_brute_tree 08_mailboxing FIRST --accel brute SECOND --accel grid-mailbox
   ARGS --width 48 GENERATE tree --depth 3)
 rt_expect_exit(08_mailboxing.figure_stats 08_mailboxing 0
-  "rays_primary=600\n.*accel=grid\\+mailboxes\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=128032\n"
+  "rays_primary=600\n.*accel=grid-mailbox\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=128032\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_stats.png")
 rt_expect_exit(08_mailboxing.no_answers_without_mailboxes 08_mailboxing 0 "tests_answered_by_mailboxes=0\n"
-  --width 30 --height 20 --stats --mailbox off --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_off.png")
-rt_expect_exit(08_mailboxing.unknown_mailbox 08_mailboxing 2 "--mailbox takes on or off, got 'yes'" --mailbox yes)
-rt_expect_exit(08_mailboxing.mailbox_with_brute 08_mailboxing 2 "--lambda and --mailbox set up the grid; they do not apply to --accel brute"
-  --accel brute --mailbox off)
+  --width 30 --height 20 --stats --accel grid --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_off.png")
+rt_expect_exit(08_mailboxing.unknown_accel 08_mailboxing 2 "--accel takes brute, grid or grid-mailbox, got 'yes'" --accel yes)
+rt_expect_exit(08_mailboxing.lambda_with_brute 08_mailboxing 2 "--lambda shapes grid or grid-mailbox; it does not apply to --accel brute"
+  --accel brute --lambda 3)
 rt_expect_exit(08_mailboxing.unknown_heat 08_mailboxing 2 "--heat-of takes saved, tests or cells, got 'time'" --heat-of time)
 
 # Chapter 09: the hashed grid renders brute force's picture and rays, at 1 and 2 threads, with a
@@ -327,9 +329,9 @@ rt_same_render(09_hashed_voxels.hashed_threads_stadium 09_hashed_voxels FIRST --
 rt_expect_exit(09_hashed_voxels.figure_stats 09_hashed_voxels 0
   "rays_primary=600\n.*accel=hashed\nobjects=21250\n.*table_lookups_skipped=[1-9][0-9]*\ngrid_resolution=361x42x361\n.*table_load=0\\.[0-9]+\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/09_hashed_voxels_stats.png")
-rt_expect_exit(09_hashed_voxels.unknown_accel 09_hashed_voxels 2 "--accel takes hashed, grid or brute, got 'octree'" --accel octree)
+rt_expect_exit(09_hashed_voxels.unknown_accel 09_hashed_voxels 2 "--accel takes brute, grid, grid-mailbox or hashed, got 'octree'" --accel octree)
 rt_expect_exit(09_hashed_voxels.table_size_with_grid 09_hashed_voxels 2
-  "--table-size sizes the hashed grid's table; it applies to --accel hashed only" --accel grid --table-size 17)
+  "--table-size shapes hashed; it does not apply to --accel grid" --accel grid --table-size 17)
 rt_expect_exit(09_hashed_voxels.too_fine 09_hashed_voxels 2
   "a hashed grid of 4096 x 634 x 4096 cells passes the limit of 2\\^31 cell addresses: choose a smaller lambda"
   --lambda 900000 --width 8 --height 8)
@@ -367,12 +369,11 @@ rt_expect_exit(10_hierarchies.figure_stats 10_hierarchies 0
 rt_expect_exit(10_hierarchies.bvh4_stats 10_hierarchies 0
   "accel=bvh4\nobjects=21250\nnodes_visited=[1-9][0-9]*\n.*wide_nodes=[1-9][0-9]*\n"
   --accel bvh4 --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/10_hierarchies_bvh4_stats.png")
-rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got 'kd'" --accel kd)
+rt_expect_exit(10_hierarchies.unknown_accel 10_hierarchies 2 "--accel takes brute, grid, grid-mailbox, hashed, .*bvh4.*, got 'kd'" --accel kd)
 rt_expect_exit(10_hierarchies.unknown_split 10_hierarchies 2 "--split takes sah or median, got 'random'" --split random)
 rt_expect_exit(10_hierarchies.leaf_size_with_grid 10_hierarchies 2
-  "--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to --accel bvh, bvh4 or hgrid only"
-  --accel grid --leaf-size 8)
-rt_expect_exit(10_hierarchies.split_with_hgrid 10_hierarchies 2 "--split shapes the BVH; it applies to --accel bvh or bvh4 only"
+  "--leaf-size shapes hgrid, bvh.*; it does not apply to --accel grid" --accel grid --leaf-size 8)
+rt_expect_exit(10_hierarchies.split_with_hgrid 10_hierarchies 2 "--split shapes bvh.*; it does not apply to --accel hgrid"
   --accel hgrid --split median)
 rt_expect_exit(10_hierarchies.hgrid_too_deep 10_hierarchies 2
   "--max-depth for the hierarchy of grids must be between 0 and 8, got 9" --accel hgrid --max-depth 9)

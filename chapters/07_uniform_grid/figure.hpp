@@ -10,6 +10,7 @@
 #include "common/heatmap.hpp"
 #include "common/scenes/nff_generators.hpp"
 #include "programs/scene_program.hpp"
+#include "programs/structures.hpp"
 
 #include <memory>
 #include <string>
@@ -24,14 +25,15 @@ constexpr float default_lambda = 4.0f;
 
 inline NffScene figure_scene() { return generated_scene(write_mountain, figure_mountain_depth, "mountain, depth 7"); }
 
-// A scene's accelerator by name: none (brute force) or the grid; the program's --accel.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda)
+// The structures chapters 01-07 bring (programs/structures.hpp): brute force and the grid. Brute
+// force builds nothing: with no accelerator the scene asks chapter 02's query and chapter 04's
+// feeler (EXERCISE 04.2), as chapter 04's program does.
+inline Structures structures()
 {
-    if (name == "brute")
-        return nullptr;
-    if (name == "grid")
-        return std::make_unique<UniformGrid>(objects, lambda);
-    throw InputError("--accel takes brute or grid, got '" + name + "'");
+    return {{brute_force_name, "every object, every ray", 2, 0.0f, {},
+             [](const Objects&, const StructureTuning&) { return std::unique_ptr<Accelerator>{}; }},
+            {"grid", "the uniform grid", 7, default_lambda, {"--lambda"},
+             [](const Objects& o, const StructureTuning& t) { return std::make_unique<UniformGrid>(o, t.lambda); }}};
 }
 
 // The figure's scene through the grid, lambda cells per object; with `cost`, what each pixel cost.

@@ -26,8 +26,7 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "grid";
-    float lambda = ch07::default_lambda;
+    StructureChoice structure{ch07::structures(), "grid", at_density(ch07::default_lambda)};
     SweepOptions sweep{false, 5, "07_uniform_grid.csv"};
 };
 
@@ -37,22 +36,16 @@ SceneProgram scene_program(const Options& o)
             ch07::figure_scene,
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return ch07::make_accelerator(o.accel, objects, o.lambda); },
-            [&o] { return o.accel; },
+            &o.structure,
             {{"cells_visited", Counter::cells_visited}},
             {}};
 }
 
 // --- The trade ---
 
-struct Measured {
-    int objects = 0;
-    Timing build_ms, render_ms;
-    std::size_t bytes = 0;
+// A measurement (measure.hpp) with the grid's own statistics and the runs it took.
+struct Measured : Measurement {
     GridStats grid;
-    double tests_per_ray = 0.0, cells_per_ray = 0.0;
-    std::uint64_t rays = 0;
-    std::vector<std::uint8_t> pixels;  // 8-bit sRGB, to compare with brute force's
     int runs = 0;
 };
 
@@ -60,22 +53,14 @@ struct Measured {
 // the render's median time over `runs` more.
 Measured measure(const NffScene& nff, const std::string& accel, float lambda, const RenderSettings& settings, int runs)
 {
-    GridStats grid;
-    const StructureMaker make =
-        accel == "grid" ? keeping_stats<UniformGrid>(grid, lambda)
-                        : [&](const Objects& objects) { return ch07::make_accelerator(accel, objects, lambda); };
-    const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : runs, runs);
     Measured m;
-    m.grid = grid;
-    m.objects = r.objects;
+    const StructureMaker make =
+        accel == "grid" ? keeping_stats<UniformGrid>(m.grid, lambda)
+                        : [&](const Objects& objects) {
+                              return structure_named(ch07::structures(), accel).make(objects, at_density(lambda));
+                          };
+    static_cast<Measurement&>(m) = measure_structure(nff, make, settings, accel == "brute" ? 1 : runs, runs);
     m.runs = runs;
-    m.build_ms = r.build_ms;
-    m.render_ms = r.render_ms;
-    m.bytes = r.bytes;
-    m.rays = r.rays;
-    m.tests_per_ray = r.per_ray(Counter::intersection_tests);
-    m.cells_per_ray = r.per_ray(Counter::cells_visited);
-    m.pixels = r.pixels;
     return m;
 }
 
@@ -119,13 +104,14 @@ LessonTable sweep_lambda(const Options& o, const RenderSettings& settings)
         res << m.grid.resolution.x << 'x' << m.grid.resolution.y << 'x' << m.grid.resolution.z;
         const double empty = 100.0 * static_cast<double>(m.grid.empty_cells) / static_cast<double>(m.grid.cells);
         const double refs = static_cast<double>(m.grid.references) / m.objects;
+        const double tests = m.per_ray(Counter::intersection_tests), cells = m.per_ray(Counter::cells_visited);
         table.row({fixed(lambda, 3), res.str(), fixed(empty, 0) + "%", fixed(refs, 2),
-                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(m.tests_per_ray, 1),
-                   fixed(m.cells_per_ray, 1), ms(m.render_ms)});
+                   fixed(static_cast<double>(m.bytes) / 1e6, 2), ms(m.build_ms), fixed(tests, 1), fixed(cells, 1),
+                   ms(m.render_ms)});
         csv << '"' << nff.name << "\"," << m.objects << ',' << lambda << ',' << res.str() << ',' << m.grid.cells << ','
-            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms.median << ',' << m.tests_per_ray << ','
-            << m.cells_per_ray << ',' << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ','
-            << m.render_ms.min << ',' << m.render_ms.max << ',' << m.runs << '\n';
+            << empty << ',' << refs << ',' << m.bytes << ',' << m.build_ms.median << ',' << tests << ',' << cells << ','
+            << m.render_ms.median << ',' << m.build_ms.min << ',' << m.build_ms.max << ',' << m.render_ms.min << ','
+            << m.render_ms.max << ',' << m.runs << '\n';
     }
     return table;
 }
@@ -137,17 +123,18 @@ void compare_on(const NffScene& nff, const Options& o, const RenderSettings& set
 {
     // Brute force on the largest scenes takes minutes a render: one run there, said in the caption.
     const int brute_runs = nff.triangles.size() + nff.spheres.size() + nff.cones.size() > 20000 ? 1 : o.sweep.repeat;
-    const Measured brute = measure(nff, "brute", o.lambda, settings, brute_runs);
-    const Measured grid = measure(nff, "grid", o.lambda, settings, o.sweep.repeat);
+    const float lambda = o.structure.tuning.lambda;
+    const Measured brute = measure(nff, "brute", lambda, settings, brute_runs);
+    const Measured grid = measure(nff, "grid", lambda, settings, o.sweep.repeat);
     if (brute.pixels != grid.pixels || brute.rays != grid.rays)
         throw std::runtime_error("the grid's image or ray count differs from brute force's on " + nff.name +
                                  ": a bug of the kit");
     for (const auto& [name, m] : {std::pair<const char*, const Measured&>{"brute", brute}, {"grid", grid}}) {
         const double speedup = brute.render_ms.median / m.render_ms.median;
-        table.row({nff.name, std::to_string(m.objects), name, fixed(m.tests_per_ray, 1), fixed(m.cells_per_ray, 1),
-                   ms(m.render_ms), ms(m.build_ms), fixed(static_cast<double>(m.bytes) / 1e6, 2),
-                   fixed(speedup, 0) + "x"});
-        csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << m.tests_per_ray << ',' << m.cells_per_ray
+        const double tests = m.per_ray(Counter::intersection_tests), cells = m.per_ray(Counter::cells_visited);
+        table.row({nff.name, std::to_string(m.objects), name, fixed(tests, 1), fixed(cells, 1), ms(m.render_ms),
+                   ms(m.build_ms), fixed(static_cast<double>(m.bytes) / 1e6, 2), fixed(speedup, 0) + "x"});
+        csv << '"' << nff.name << "\"," << m.objects << ',' << name << ',' << tests << ',' << cells
             << ',' << m.render_ms.median << ',' << m.build_ms.median << ',' << m.bytes << ',' << m.runs << ','
             << speedup << ',' << m.render_ms.min << ',' << m.render_ms.max << ',' << m.build_ms.min << ','
             << m.build_ms.max << '\n';
@@ -216,7 +203,7 @@ void sweep(const Options& o, const CommandLine& cli)
     std::cerr << "measuring brute force against the grid as the scene grows, then lambda (minutes)...\n";
     std::ofstream n_csv = open_csv(csv_beside(o.sweep.csv, "_n"), comparison_header);
     std::ostringstream what;
-    what << "Brute force against the grid as the mountain grows (lambda " << o.lambda << ")";
+    what << "Brute force against the grid as the mountain grows (lambda " << o.structure.tuning.lambda << ")";
     LessonTable growth = comparison_table("07.growth", what.str(), settings, o.sweep.repeat);
     for (int depth = 1; depth <= 8; ++depth)
         compare_on(generated_scene(write_mountain, depth, "mountain " + std::to_string(depth)), o, settings, n_csv,
@@ -240,21 +227,11 @@ int main(int argc, char** argv)
 {
     return run_program("07_uniform_grid", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "07_uniform_grid", "The uniform grid: a scene's rays walk its cells, testing only the objects there.",
-            o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
-        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
-        add_sweep_options(cli, o.sweep, "measure brute force against the grid as scenes grow, and lambda's trade",
-                          "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        if (o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
-        if (o.accel == "brute" && cli.given("--lambda"))
-            throw InputError("--lambda sets the grid's density; it does not apply to --accel brute");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"The uniform grid: a scene's rays walk its cells, testing only the objects there.",
+             "measure brute force against the grid as scenes grow, and lambda's trade",
+             "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)"},
+            1e5f, {}, {}, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

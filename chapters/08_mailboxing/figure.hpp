@@ -15,14 +15,14 @@ constexpr int figure_sticks_depth = 5;  // 8000 sticks
 
 inline NffScene figure_scene() { return generated_scene(write_sticks, figure_sticks_depth, "sticks, depth 5"); }
 
-// The accelerator by name (--accel, --mailbox): brute force (none), or the grid with or without
-// mailboxes.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, bool mailboxes, const Objects& objects,
-                                                     float lambda)
+// Chapter 07's structures and the grid with mailboxes (programs/structures.hpp).
+inline Structures structures()
 {
-    if (name == "grid" && mailboxes)
-        return std::make_unique<MailboxGrid>(objects, lambda);
-    return ch07::make_accelerator(name, objects, lambda);
+    return followed_by(ch07::structures(),
+                       {{"grid-mailbox", "the uniform grid with a mailbox per object and thread", 8,
+                         ch07::default_lambda, {"--lambda"}, [](const Objects& o, const StructureTuning& t) {
+                             return std::make_unique<MailboxGrid>(o, t.lambda);
+                         }}});
 }
 
 // The figure's scene through the grid with mailboxes; with `cost`, what each pixel cost.

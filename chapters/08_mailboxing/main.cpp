@@ -1,6 +1,6 @@
 // Chapter 08's program: renders the figure (a pile of sticks through the grid with mailboxes,
 // beside the heat map of the tests its mailboxes answered) or any NFF scene (--scene, --classic)
-// through brute force or the grid (--accel), with or without mailboxes (--mailbox). --sweep
+// through brute force or the grid, with or without mailboxes (--accel). --sweep
 // measures the trade: tests and time saved by the mailboxes against the grid's density, by ray
 // kind (primary, shadow, secondary), on three scenes.
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
@@ -25,9 +25,7 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "grid";
-    std::string mailbox = "on";
-    float lambda = ch07::default_lambda;
+    StructureChoice structure{ch08::structures(), "grid-mailbox"};
     SweepOptions sweep{false, 9, "08_mailboxing.csv"};
 };
 
@@ -38,8 +36,7 @@ SceneProgram scene_program(const Options& o)
             {{"saved", Counter::mailbox_hits, "tests answered by mailboxes per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return ch08::make_accelerator(o.accel, o.mailbox == "on", objects, o.lambda); },
-            [&o] { return o.accel + (o.accel == "grid" && o.mailbox == "on" ? "+mailboxes" : ""); },
+            &o.structure,
             {{"cells_visited", Counter::cells_visited}, {"tests_answered_by_mailboxes", Counter::mailbox_hits}},
             {}};
 }
@@ -205,22 +202,10 @@ int main(int argc, char** argv)
 {
     return run_program("08_mailboxing", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "08_mailboxing", "Mailboxing: an object met again in a later cell is answered from its mailbox.", o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: grid or brute (every object, every ray)");
-        cli.option("--mailbox", o.mailbox, "with the grid: on (a mailbox per object and thread) or off");
-        cli.option("--lambda", o.lambda, "the grid's density: cells per object", 0.0f, 1e5f);
-        add_sweep_options(cli, o.sweep, "measure the tests and time the mailboxes save, by density and ray kind");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        if (o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes brute or grid, got '" + o.accel + "'");
-        if (o.mailbox != "on" && o.mailbox != "off")
-            throw InputError("--mailbox takes on or off, got '" + o.mailbox + "'");
-        if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--mailbox")))
-            throw InputError("--lambda and --mailbox set up the grid; they do not apply to --accel brute");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Mailboxing: an object met again in a later cell is answered from its mailbox.",
+             "measure the tests and time the mailboxes save, by density and ray kind"},
+            1e5f, {}, {}, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

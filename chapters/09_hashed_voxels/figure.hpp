@@ -3,7 +3,7 @@
 // intersection tests per pixel.
 #pragma once
 
-#include "07_uniform_grid/figure.hpp"
+#include "08_mailboxing/figure.hpp"
 #include "09_hashed_voxels/hashed_grid.hpp"
 
 #include <memory>
@@ -16,10 +16,9 @@ constexpr int figure_stadium_depth = 5;
 static_assert(dense_grid_lambda == ch07::default_lambda,
               "the hashed grid weighs its memory against chapter 07's grid at that grid's default lambda");
 
-// Why 256 cells per object: on the stadium (the lesson's table 09.structures) the hashed grid
-// renders about ten times faster than at the dense grid's 4 (where the small mesh fills a few
-// cells), with 86% of its cells empty; 1024 tests fewer objects per ray but takes 3.4 times the
-// memory (74 MB against 21.5) for a time within the noise of 256's.
+// Why 256 cells per object: on the stadium the hashed grid renders far faster than at the dense
+// grid's 4 (where the small mesh fills a few cells), and a finer grid takes more memory for no time
+// saved. The figures are the lesson's table 09.structures.
 constexpr float default_hashed_lambda = 256.0f;
 
 inline NffScene figure_scene()
@@ -27,15 +26,14 @@ inline NffScene figure_scene()
     return generated_scene(write_stadium, figure_stadium_depth, "teapot in a stadium, depth 5");
 }
 
-// The accelerator by name (--accel): brute force (none), the dense grid or the hashed one.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda,
-                                                     std::uint32_t table_size)
+// Chapter 08's structures and the hashed grid (programs/structures.hpp).
+inline Structures structures()
 {
-    if (name == "hashed")
-        return std::make_unique<HashedGrid>(objects, lambda, table_size);
-    if (name == "grid" || name == "brute")
-        return ch07::make_accelerator(name, objects, lambda);
-    throw InputError("--accel takes hashed, grid or brute, got '" + name + "'");
+    return followed_by(ch08::structures(),
+                       {{"hashed", "the hashed grid, its occupied cells in a hash table", 9, default_hashed_lambda,
+                         {"--lambda", "--table-size"}, [](const Objects& o, const StructureTuning& t) {
+                             return std::make_unique<HashedGrid>(o, t.lambda, t.table_size);
+                         }}});
 }
 
 // The figure's scene through the hashed grid; with `cost`, what each pixel cost.

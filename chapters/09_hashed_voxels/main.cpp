@@ -23,11 +23,18 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "hashed";
-    float lambda = ch09::default_hashed_lambda;
-    int table_size = 0;
+    StructureChoice structure{ch09::structures(), "hashed"};
+    int table_size = 0;  // the tuning's table_size, read as an int
     SweepOptions sweep{false, 5, "09_hashed_voxels.csv"};
 };
+
+StructureTuning tuning(float lambda, std::uint32_t table_size)
+{
+    StructureTuning t;
+    t.lambda = lambda;
+    t.table_size = table_size;
+    return t;
+}
 
 SceneProgram scene_program(const Options& o)
 {
@@ -36,10 +43,7 @@ SceneProgram scene_program(const Options& o)
             {{"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"},
              {"lookups", Counter::table_lookups, "table lookups per pixel"}},
-            [&o](const Objects& objects) {
-                return ch09::make_accelerator(o.accel, objects, o.lambda, static_cast<std::uint32_t>(o.table_size));
-            },
-            [&o] { return o.accel; },
+            &o.structure,
             {{"cells_visited", Counter::cells_visited},
              {"table_lookups", Counter::table_lookups},
              {"table_lookups_skipped", Counter::table_lookups_skipped}},
@@ -68,7 +72,9 @@ Measured measure(const NffScene& nff, const std::string& accel, float lambda, st
         accel == "hashed" ? keeping_stats<HashedGrid>(hashed, lambda, table_size)
         : accel == "grid"
             ? keeping_stats<UniformGrid>(grid, lambda)
-            : [&](const Objects& objects) { return ch09::make_accelerator(accel, objects, lambda, table_size); };
+            : [&](const Objects& objects) {
+                  return structure_named(ch09::structures(), accel).make(objects, tuning(lambda, table_size));
+              };
     const Measurement r = measure_structure(nff, make, settings, accel == "brute" ? 1 : repeat, repeat);
     Measured m;
     m.structure = accel;
@@ -183,27 +189,17 @@ int main(int argc, char** argv)
 {
     return run_program("09_hashed_voxels", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "09_hashed_voxels", "Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.",
-            o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel, "what answers the queries: hashed, grid (dense, chapter 07) or brute");
-        cli.option("--lambda", o.lambda, "cells per object (256 for the hashed grid, 4 for the dense one by default)",
-                   0.0f, 1e6f);
-        cli.option("--table-size", o.table_size, "the hash table's size M (0: the least prime at least twice the "
-                   "occupied cells)", 0, 1 << 30);
-        add_sweep_options(cli, o.sweep, "measure the hashed grid against the dense one, and the table size");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        if (o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes hashed, grid or brute, got '" + o.accel + "'");
-        if (o.accel == "grid" && !cli.given("--lambda"))
-            o.lambda = ch07::default_lambda;
-        if (o.accel == "brute" && (cli.given("--lambda") || cli.given("--table-size")))
-            throw InputError("--lambda and --table-size set up a grid; they do not apply to --accel brute");
-        if (o.accel != "hashed" && cli.given("--table-size"))
-            throw InputError("--table-size sizes the hashed grid's table; it applies to --accel hashed only");
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        const auto table_size = [&](CommandLine& cli) {
+            cli.option("--table-size", o.table_size,
+                       "the hash table's size M (0: the least prime at least twice the occupied cells)", 0, 1 << 30);
+        };
+        const auto take_table_size = [&](const CommandLine&) {
+            o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
+        };
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Hashed voxels: a grid too fine for an array, its occupied cells in a hash table.",
+             "measure the hashed grid against the dense one, and the table size"},
+            1e6f, table_size, take_table_size, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

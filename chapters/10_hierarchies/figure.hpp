@@ -15,24 +15,40 @@ namespace rt::ch10 {
 
 inline NffScene figure_scene() { return ch09::figure_scene(); }
 
-// The accelerator by name (--accel): every structure of chapters 07-10.
-// The hierarchy of grids' settings come from `hgrid`, except its lambda, which is `lambda`.
-inline std::unique_ptr<Accelerator> make_accelerator(const std::string& name, const Objects& objects, float lambda,
-                                                     const BvhSettings& bvh, HGridSettings hgrid = {})
+// The BVH's settings as the options set them: each field the options leave alone keeps its default.
+inline BvhSettings bvh_settings(const StructureTuning& t)
 {
-    if (name == "bvh")
-        return std::make_unique<BvhAccel>(objects, bvh);
-    if (name == "bvh4")
-        return std::make_unique<WideBvhAccel>(objects, bvh);
-    if (name == "hgrid") {
-        hgrid.lambda = lambda;
-        return std::make_unique<HGridAccel>(objects, hgrid);
-    }
-    if (name == "hashed")
-        return ch09::make_accelerator(name, objects, lambda, 0);
-    if (name == "grid" || name == "brute")
-        return ch07::make_accelerator(name, objects, lambda);
-    throw InputError("--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got '" + name + "'");
+    BvhSettings b;
+    if (t.leaf_size > 0)
+        b.leaf_size = t.leaf_size;
+    if (t.max_depth >= 0)
+        b.max_depth = t.max_depth;
+    if (t.split == "median")
+        b.split = BvhSplit::median;
+    return b;
+}
+
+// Chapter 09's structures and the three trees (programs/structures.hpp).
+inline Structures structures()
+{
+    return followed_by(
+        ch09::structures(),
+        {{"hgrid", "the hierarchy of grids", 10, ch07::default_lambda, {"--lambda", "--leaf-size", "--max-depth"},
+          [](const Objects& o, const StructureTuning& t) {
+              HGridSettings h;
+              h.lambda = t.lambda;
+              if (t.leaf_size > 0)
+                  h.leaf_size = t.leaf_size;
+              if (t.max_depth >= 0)
+                  h.max_depth = t.max_depth;
+              return std::make_unique<HGridAccel>(o, h);
+          }},
+         {"bvh", "the bounding volume hierarchy", 10, 0.0f, {"--leaf-size", "--max-depth", "--split"},
+          [](const Objects& o, const StructureTuning& t) { return std::make_unique<BvhAccel>(o, bvh_settings(t)); }},
+         {"bvh4", "the same tree, four children to a node", 10, 0.0f, {"--leaf-size", "--max-depth", "--split"},
+          [](const Objects& o, const StructureTuning& t) {
+              return std::make_unique<WideBvhAccel>(o, bvh_settings(t));
+          }}});
 }
 
 // The figure's scene through the BVH; with `cost`, what each pixel cost.

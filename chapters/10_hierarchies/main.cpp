@@ -24,29 +24,21 @@ namespace {
 struct Options {
     CommonOptions common;
     SceneOptions scene;
-    std::string accel = "bvh";
-    float lambda = ch07::default_lambda;
-    BvhSettings bvh;
-    HGridSettings hgrid;
-    int leaf_size = 0, max_depth = -1;  // given: for the BVH or the hierarchy of grids, whichever --accel names
-    std::string split = "sah";
+    StructureChoice structure{ch10::structures(), "bvh"};  // its tuning: lambda, leaf size, depth and split
     SweepOptions sweep{false, 5, "10_hierarchies.csv"};
 };
 
 SceneProgram scene_program(const Options& o)
 {
     const auto default_structure = [](const std::string& name) {
-        return [name](const Objects& objects) {
-            return ch10::make_accelerator(name, objects, ch07::default_lambda, BvhSettings{});
-        };
+        return [name](const Objects& objects) { return structure_named(ch10::structures(), name).make(objects); };
     };
     return {"10_hierarchies",
             ch10::figure_scene,
             {{"nodes", Counter::nodes_visited, "nodes visited per pixel"},
              {"tests", Counter::intersection_tests, "intersection tests per pixel"},
              {"cells", Counter::cells_visited, "cells visited per pixel"}},
-            [&o](const Objects& objects) { return ch10::make_accelerator(o.accel, objects, o.lambda, o.bvh, o.hgrid); },
-            [&o] { return o.accel; },
+            &o.structure,
             {{"nodes_visited", Counter::nodes_visited}, {"cells_visited", Counter::cells_visited}},
             {{"uniform grid", default_structure("grid")},
              {"hierarchy of grids", default_structure("hgrid")},
@@ -173,10 +165,8 @@ LessonTable sweep_structures(Sweep& w)
         std::vector<std::uint8_t> same;
         const std::string objects = grouped(Sweep::objects_in(nff));
         for (const std::string name : {"bvh", "hgrid", "grid", "hashed"}) {
-            const float lambda = name == "hashed" ? ch09::default_hashed_lambda : ch07::default_lambda;
-            const auto make = [&](const Objects& objs) {
-                return ch10::make_accelerator(name, objs, lambda, BvhSettings{});
-            };
+            const Structure structure = structure_named(ch10::structures(), name);
+            const auto make = [&](const Objects& objs) { return structure.make(objs); };
             Measurement m;
             try {
                 m = measure(nff, make, w.settings, w.repeat);
@@ -226,50 +216,30 @@ int main(int argc, char** argv)
 {
     return run_program("10_hierarchies", [&] {
         Options o;
-        CommandLine cli = program_command_line(
-            "10_hierarchies", "Hierarchies: a bounding volume hierarchy built by the surface area heuristic.",
-            o.common);
-        const SceneProgram program = scene_program(o);
-        add_scene_program_options(cli, o.scene, program);
-        cli.option("--accel", o.accel,
-                   "what answers the queries: bvh, bvh4 (the same tree, four children to a node), hgrid (the hierarchy of "
-                   "grids), hashed (chapter 09), grid (07) or brute");
-        cli.option("--lambda", o.lambda, "with grid, hgrid or hashed: cells per object", 0.0f, 1e6f);
-        cli.option("--leaf-size", o.leaf_size,
-                   "with bvh or bvh4: a node of at most this many objects is a leaf (default 4; a larger one is too "
-                   "at the depth limit or when no split pays); with hgrid: the most a cell lists before it "
-                   "gets a grid of its own (default 8)",
-                   1, 65535);
-        cli.option("--max-depth", o.max_depth,
-                   "with bvh or bvh4: the deepest a leaf may lie (default 48); with hgrid: the deepest a grid may lie (default "
-                   "2); the root is 0",
-                   0, bvh_stack_size - 2);
-        cli.option("--split", o.split, "with bvh or bvh4: sah (the surface area heuristic) or median");
-        add_sweep_options(cli, o.sweep, "measure leaf size, depth and split, and every structure side by side");
-        if (!cli.parse(argc, argv, std::cout))
-            return 0;
-        const bool tree = o.accel == "bvh" || o.accel == "bvh4";
-        if (!tree && o.accel != "hgrid" && o.accel != "hashed" && o.accel != "grid" && o.accel != "brute")
-            throw InputError("--accel takes bvh, bvh4, hgrid, hashed, grid or brute, got '" + o.accel + "'");
-        if (o.split != "sah" && o.split != "median")
-            throw InputError("--split takes sah or median, got '" + o.split + "'");
-        o.bvh.split = o.split == "sah" ? BvhSplit::sah : BvhSplit::median;
-        if (!tree && cli.given("--split"))
-            throw InputError("--split shapes the BVH; it applies to --accel bvh or bvh4 only");
-        if (!tree && o.accel != "hgrid" && (cli.given("--leaf-size") || cli.given("--max-depth")))
-            throw InputError("--leaf-size and --max-depth shape the BVH and the hierarchy of grids; they apply to "
-                             "--accel bvh, bvh4 or hgrid only");
-        if ((tree || o.accel == "brute") && cli.given("--lambda"))
-            throw InputError("--lambda sets a grid's density; it applies to --accel grid, hgrid or hashed only");
-        if (o.accel == "hgrid" && o.max_depth > HGridAccel::max_hgrid_depth)
-            throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
-                             std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(o.max_depth));
-        if (cli.given("--leaf-size"))
-            o.bvh.leaf_size = o.hgrid.leaf_size = o.leaf_size;
-        if (cli.given("--max-depth"))
-            o.bvh.max_depth = o.hgrid.max_depth = o.max_depth;
-        if (o.accel == "hashed" && !cli.given("--lambda"))
-            o.lambda = ch09::default_hashed_lambda;
-        return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(o, cli); });
+        StructureTuning& t = o.structure.tuning;
+        const auto tree_options = [&](CommandLine& cli) {
+            cli.option("--leaf-size", t.leaf_size,
+                       "a BVH node of at most this many objects is a leaf (default 4; a larger one is too at the "
+                       "depth limit or when no split pays); in the hierarchy of grids, the most a cell lists before "
+                       "it gets a grid of its own (default 8)",
+                       1, 65535);
+            cli.option("--max-depth", t.max_depth,
+                       "the deepest a BVH leaf may lie (default 48), or a grid of the hierarchy of grids (default "
+                       "2); the root is 0",
+                       0, bvh_stack_size - 2);
+            cli.option("--split", t.split, "how a BVH node is split: sah (the surface area heuristic) or median");
+        };
+        const auto check_tree_options = [&](const CommandLine& cli) {
+            if (cli.given("--split") && t.split != "sah" && t.split != "median")
+                throw InputError("--split takes sah or median, got '" + t.split + "'");
+            if (o.structure.accel == "hgrid" && t.max_depth > HGridAccel::max_hgrid_depth)
+                throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
+                                 std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(t.max_depth));
+        };
+        return scene_program_main(
+            argc, argv, o, scene_program(o),
+            {"Hierarchies: a bounding volume hierarchy built by the surface area heuristic.",
+             "measure leaf size, depth and split, and every structure side by side"},
+            1e6f, tree_options, check_tree_options, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

@@ -48,6 +48,17 @@ struct alignas(64) WideNode {
 };
 static_assert(sizeof(WideNode) == 128, "a wide node is two cache lines");
 
+// Whether lane i is in a mask of four lanes: child i of a node's `occupied` or `in_blocks`, of the
+// boxes a ray enters, or lane i of the triangles a block's test hit.
+inline bool lane_in(unsigned mask, int i) { return (mask >> i & 1u) != 0; }
+
+// The lane of a mask with exactly one lane in it (1, 2, 4 or 8).
+inline int only_lane(unsigned mask)
+{
+    constexpr int lane_of[9] = {-1, 0, 1, -1, 2, -1, -1, -1, 3};
+    return lane_of[mask];
+}
+
 struct WideBvh {
     std::vector<WideNode> nodes;  // nodes[0] is the root
     std::vector<std::uint32_t> object_index;  // the binary tree's: where a leaf of other kinds reads its objects
@@ -106,10 +117,14 @@ inline unsigned enter_boxes(const WideNode& node, const RaySlabs& slabs, Interva
 // (a shadow feeler's: the first hit found ends it).
 enum class QueryKind { closest, any };
 
+// Where a query stands after a step of its walk: going on, or answered (only an any-hit query's
+// first hit answers it before the walk ends).
+enum class Walk { go_on, answered };
+
 // One query's walk down the wide tree: the state it carries (the ray, the reach that could still
 // beat the best hit, the best so far, the stack of children to visit) and its three steps, a node
-// (open), a leaf asked one by one (leaf) and a block of four triangles (block). A step returns true
-// when a hit ends the query, which only an any-hit query's first hit does.
+// (open: the child to go into next), a leaf asked one by one (leaf) and a block of four triangles
+// (block), each of these two saying where the query stands (Walk).
 template <QueryKind kind>
 class WideQuery {
 public:
@@ -131,10 +146,10 @@ public:
             if (e.in_blocks) {
                 const FourTriangles* g = &tree_.blocks[e.first];
                 for (std::uint32_t j = 0; j < e.count; j += 4, ++g)
-                    if (block(*g, std::min<std::uint32_t>(4, e.count - j)))
+                    if (block(*g, std::min<std::uint32_t>(4, e.count - j)) == Walk::answered)
                         return answer(hit);
             } else if (e.count > 0) {
-                if (leaf(&tree_.object_index[e.first], e.count))
+                if (leaf(&tree_.object_index[e.first], e.count) == Walk::answered)
                     return answer(hit);
             } else if (open(tree_.nodes[e.first], e)) {
                 continue;
@@ -155,35 +170,43 @@ private:
         float t;                  // where the ray enters the child's box
     };
 
+    // Child i of `node`, which the ray enters at t.
+    static Entry child(const WideNode& node, int i, float t)
+    {
+        return {node.first[i], node.count[i], static_cast<std::uint16_t>(lane_in(node.in_blocks, i)), t};
+    }
+
     bool answer(ObjectHit& hit) const
     {
         hit = best_;
         return true;
     }
 
-    // A hit becomes the best so far; true when it answers the query.
-    bool keep(const ObjectHit& h)
+    // A hit becomes the best so far, which answers an any-hit query.
+    Walk keep(const ObjectHit& h)
     {
         best_ = h;
         found_ = true;
         reach_.max = std::nextafter(best_.t, infinity);
-        return kind == QueryKind::any;
+        return kind == QueryKind::any ? Walk::answered : Walk::go_on;
     }
 
     // Object k asked as 10.4's loop asks it, in the range that beats the best so far.
-    bool ask(int k)
+    Walk ask(int k)
     {
         ObjectHit h;
-        return objects_.intersect(k, ray_, closer_than(range_, best_, k), h) && keep(h);
+        if (!objects_.intersect(k, ray_, closer_than(range_, best_, k), h))
+            return Walk::go_on;
+        return keep(h);
     }
 
     // A leaf of other kinds: its objects one by one, in order, through the object list.
-    bool leaf(const std::uint32_t* object, std::uint32_t n)
+    Walk leaf(const std::uint32_t* object, std::uint32_t n)
     {
         for (std::uint32_t j = 0; j < n; ++j)
-            if (ask(static_cast<int>(object[j])))
-                return true;
-        return false;
+            if (ask(static_cast<int>(object[j])) == Walk::answered)
+                return Walk::answered;
+        return Walk::go_on;
     }
 
     // A node: its children that the ray enters within reach. The nearest becomes `e`, the others are
@@ -197,20 +220,20 @@ private:
             return false;
         if ((entered & (entered - 1)) == 0) {
             // One child entered (the commonest case): straight into it, nothing pushed.
-            const int i = entered == 1u ? 0 : entered == 2u ? 1 : entered == 4u ? 2 : 3;
-            e = {node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
+            const int i = only_lane(entered);
+            e = child(node, i, t0[i]);
             return true;
         }
         const int base = top_;
         for (int i = 0; i < 4; ++i) {
-            if (!(entered >> i & 1u))
+            if (!lane_in(entered, i))
                 continue;
             // Asked for now, to arrive while the nearer children are walked.
-            if (node.in_blocks >> i & 1u)
+            if (lane_in(node.in_blocks, i))
                 prefetch(&tree_.blocks[node.first[i]], sizeof(FourTriangles));
             else if (node.count[i] == 0)
                 prefetch(&tree_.nodes[node.first[i]], sizeof(WideNode));
-            const Entry c{node.first[i], node.count[i], static_cast<std::uint16_t>(node.in_blocks >> i & 1u), t0[i]};
+            const Entry c = child(node, i, t0[i]);
             int j = top_++;
             for (; j > base && stack_[j - 1].t < c.t; --j)
                 stack_[j] = stack_[j - 1];
@@ -252,7 +275,7 @@ private:
 
     // A block of a leaf of triangles, its first n lanes: four at a time (10.6) where the query asks
     // for the watertight test, else (or with 10.6's stub) one by one.
-    bool block(const FourTriangles& g, std::uint32_t n)
+    Walk block(const FourTriangles& g, std::uint32_t n)
     {
         // Bounded, every lane hit along the whole line, as hit_triangle_bounded asks: a lane's
         // answer may lie in the range when its float t does not (bounded_answer).
@@ -260,28 +283,28 @@ private:
         const FourHits h = four_wide_ ? hit_four_triangles(g, frame_, asked) : FourHits::not_tested();
         if (!h.tested) {
             for (std::uint32_t i = 0; i < n; ++i)
-                if (ask(g.object[i]))
-                    return true;
-            return false;
+                if (ask(g.object[i]) == Walk::answered)
+                    return Walk::answered;
+            return Walk::go_on;
         }
         if (kind == QueryKind::any)
             return first_lane_kept(g, h, n);
         count(Counter::intersection_tests, n);
         nearest_lane_kept(g, h, h.hit & ((1u << n) - 1u));
-        return false;
+        return Walk::go_on;
     }
 
     // An any-hit query's block: the lanes in the leaf's order, counted as the one-by-one loop counts
-    // them (the tests up to the hit); true at the first lane kept.
-    bool first_lane_kept(const FourTriangles& g, const FourHits& h, std::uint32_t n)
+    // them (the tests up to the hit); answered at the first lane kept.
+    Walk first_lane_kept(const FourTriangles& g, const FourHits& h, std::uint32_t n)
     {
         for (std::uint32_t i = 0; i < n; ++i)
-            if (h.hit >> i & 1u && lane_kept(g, h, static_cast<int>(i))) {
+            if (lane_in(h.hit, static_cast<int>(i)) && lane_kept(g, h, static_cast<int>(i))) {
                 count(Counter::intersection_tests, i + 1);
-                return true;
+                return Walk::answered;
             }
         count(Counter::intersection_tests, n);
-        return false;
+        return Walk::go_on;
     }
 
     // A closest-hit query's block, the lanes hit in `left`.
@@ -291,8 +314,8 @@ private:
             // Every lane asked, as the one-by-one loop asks them (closer_than keeps the nearest
             // whatever the order): a lane whose float t is within the bound is answered by double,
             // nearer or farther than the float t says, so no float order can end the block early.
-            for (int i = 0; left != 0; ++i, left >>= 1)
-                if (left & 1u)
+            for (int i = 0; i < 4; ++i)
+                if (lane_in(left, i))
                     lane_kept(g, h, i);
             return;
         }
@@ -303,7 +326,7 @@ private:
         while (left != 0) {
             int i = -1;
             for (int l = 0; l < 4; ++l)
-                if (left >> l & 1u && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
+                if (lane_in(left, l) && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
                     i = l;
             if (lane_kept(g, h, i))
                 return;
@@ -370,7 +393,7 @@ private:
     void build_triangle_blocks(const Objects& objects)
     {
         const auto triangles_only = [&](const WideNode& w, int i) {
-            if (!(w.occupied >> i & 1u) || w.count[i] == 0)
+            if (!lane_in(w.occupied, i) || w.count[i] == 0)
                 return false;
             for (std::uint32_t j = 0; j < w.count[i]; ++j)
                 if (objects.ref(static_cast<int>(tree_.object_index[w.first[i] + j])).kind != ObjectKind::triangle)

@@ -15,12 +15,13 @@ set xlabel 'objects in the scene'
 add(list, w) = strstrt(' '.list.' ', ' '.w.' ') ? list : list.' '.w
 structures = ''
 stats dir.'/results.csv' using (structures = add(structures, strcol('structure')), 0) nooutput
-name(s) = s eq 'brute' ? 'brute force' : s eq 'grid' ? 'uniform grid' \
-    : s eq 'grid-mailbox' ? 'grid + mailboxes' : s eq 'hashed' ? 'hashed grid' \
-    : s eq 'hgrid' ? 'hierarchy of grids' : s eq 'bvh' ? 'BVH' \
-    : s eq 'embree-medium' ? 'Embree, medium' : s eq 'embree-high' ? 'Embree, high' : s
-colour(i) = word('#666666 #1f78b4 #a6cee3 #33a02c #b2df8a #e31a1c #ff7f00 #6a3d9a', (i - 1) % 8 + 1)
-marker(i) = word('1 5 4 9 8 7 13 11', (i - 1) % 8 + 1) + 0
+# Each structure under its one name, the registry's (chapters/programs/structures.hpp; --help says
+# what each is), and Embree's two.
+# Twelve colours and markers: room for every structure of the registry and Embree's two, and a few
+# more, before two share a look.
+colour(i) = word('#666666 #1f78b4 #a6cee3 #33a02c #b2df8a #e31a1c #ff7f00 #6a3d9a #b15928 #fb9a99 #cab2d6 #999933', \
+    (i - 1) % 12 + 1)
+marker(i) = word('1 5 4 9 8 7 13 11 6 3 2 10', (i - 1) % 12 + 1) + 0
 pick(s) = strcol('rays') eq 'incoherent' && strcol('structure') eq s && column('threads') == 1 \
     ? column('mrays_per_s') : NaN
 set output dir.'/results.png'
@@ -32,7 +33,7 @@ set autoscale fix
 set key outside right center spacing 1.3 reverse Left
 set offsets graph 0.06, graph 0.06, graph 0.08, graph 0.08
 plot for [i = 1:words(structures)] dir.'/results.csv' using 'objects':(pick(word(structures, i))) \
-    with points pt marker(i) ps 2.2 lw 2 lc rgb colour(i) title name(word(structures, i))
+    with points pt marker(i) ps 2.2 lw 2 lc rgb colour(i) title word(structures, i)
 
 set output dir.'/scaling.png'
 set title "The BVH as the scene grows\n" \

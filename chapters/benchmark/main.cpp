@@ -8,9 +8,7 @@
 // Writes, into --out-dir: results.csv (closest hits), any_hit.csv (the same for any-hit queries),
 // results.md (the tables), scaling.csv (the BVH's time per ray against N) and, with --classic,
 // classic.csv (the classic SPD rules at 513 x 513 through the BVH and the 4-wide BVH).
-#include "08_mailboxing/figure.hpp"
 #include "10_hierarchies/figure.hpp"
-#include "10_hierarchies/wide_bvh.hpp"
 #include "benchmark/embree_accel.hpp"
 #include "benchmark/rays.hpp"
 #include "common/cli.hpp"
@@ -58,28 +56,35 @@ std::string rate(double v)
     return s.str();
 }
 
-// A structure of the benchmark: its name, and how to build it for a scene with a number of threads
+// A structure of the benchmark (the kit's, from its registry, or Embree): its name, and how to
+// build it for a scene with a number of threads
 // (only Embree builds in parallel; the kit's builds are single-threaded).
-struct Structure {
+struct Entrant {
     std::string name;
     std::function<std::unique_ptr<Accelerator>(const Objects&, int threads)> make;
     bool embree = false;
 };
 
-std::vector<Structure> structures()
+// The kit's structures' names, comma-separated, for --structures' help.
+std::string kit_names()
 {
-    const auto kit = [](const std::string& name, std::function<std::unique_ptr<Accelerator>(const Objects&)> make) {
-        return Structure{name, [make](const Objects& o, int) { return make(o); }, false};
-    };
-    std::vector<Structure> list = {
-        kit("brute", [](const Objects&) { return std::make_unique<BruteForce>(); }),
-        kit("grid", [](const Objects& o) { return std::make_unique<UniformGrid>(o, ch07::default_lambda); }),
-        kit("grid-mailbox", [](const Objects& o) { return std::make_unique<MailboxGrid>(o, ch07::default_lambda); }),
-        kit("hashed", [](const Objects& o) { return std::make_unique<HashedGrid>(o, ch09::default_hashed_lambda, 0); }),
-        kit("hgrid", [](const Objects& o) { return std::make_unique<HGridAccel>(o); }),
-        kit("bvh", [](const Objects& o) { return std::make_unique<BvhAccel>(o); }),
-        kit("bvh4", [](const Objects& o) { return std::make_unique<WideBvhAccel>(o); }),
-    };
+    std::string names;
+    for (const rt::Structure& s : ch10::structures())
+        names += (names.empty() ? "" : ",") + s.name;
+    return names;
+}
+
+std::vector<Entrant> structures()
+{
+    std::vector<Entrant> list;
+    for (const rt::Structure& s : ch10::structures())  // the registry (programs/structures.hpp)
+        list.push_back({s.name,
+                        [s](const Objects& o, int) -> std::unique_ptr<Accelerator> {
+                            if (std::unique_ptr<Accelerator> built = s.make(o))
+                                return built;
+                            return std::make_unique<BruteForce>();  // brute force builds nothing
+                        },
+                        false});
     if (have_embree()) {
         list.push_back({"embree-medium",
                         [](const Objects& o, int t) { return std::make_unique<EmbreeAccel>(o, EmbreeQuality::medium, t); },
@@ -219,7 +224,7 @@ constexpr double pass_budget_seconds = 0.1;
 constexpr double brute_tests_budget = 3e7;
 
 // The median of up to `repeat` builds (one when a build takes over a second), in `build_ms`.
-std::unique_ptr<Accelerator> build_timed(const Structure& s, const Objects& objects, int threads, int repeat,
+std::unique_ptr<Accelerator> build_timed(const Entrant& s, const Objects& objects, int threads, int repeat,
                                          double& build_ms)
 {
     std::unique_ptr<Accelerator> accel;
@@ -237,7 +242,7 @@ std::unique_ptr<Accelerator> build_timed(const Structure& s, const Objects& obje
 
 // One structure on one set of rays: checked against the reference's answers on every ray it is
 // timed on (single-threaded, counted), then timed, closest and any, on `threads` threads.
-Row time_rays(const Structure& s, const Accelerator& accel, const RaySet& set, const Answers& want,
+Row time_rays(const Entrant& s, const Accelerator& accel, const RaySet& set, const Answers& want,
               const Objects& objects, float scale, int threads, const Options& o, const std::string& scene)
 {
     std::vector<size_t> which = strided(set.rays.size(), 1);
@@ -320,7 +325,7 @@ void bench_scene(const Scene& sc, const Options& o, std::vector<Row>& rows, std:
     log << "\n" << sc.name << ": " << objects.size() << " objects, " << sets[0].rays.size() << " primary and "
         << sets[1].rays.size() << " incoherent rays\n";
 
-    for (const Structure& s : structures()) {
+    for (const Entrant& s : structures()) {
         if (!wanted(o, s.name))
             continue;
         std::unique_ptr<Accelerator> accel;
@@ -504,7 +509,7 @@ int main(int argc, char** argv)
         cli.option("--scene", o.scene, "benchmark this NFF file instead of the six generated scenes");
         cli.option("--out-dir", o.out_dir, "where results.csv and the other tables go");
         cli.flag("--tiny", o.tiny, "one small scene, 16x16 rays, one pass: a check that runs in seconds (CI)");
-        cli.option("--structures", o.only, "only these, comma-separated (brute,grid,grid-mailbox,hashed,hgrid,bvh,bvh4,"
+        cli.option("--structures", o.only, "only these, comma-separated (" + kit_names() + ","
                    "embree-medium,embree-high); default all");
         cli.flag("--classic", o.classic, "also time the classic SPD rules at 513x513 through the BVH and the 4-wide BVH");
         if (!cli.parse(argc, argv, std::cout))
@@ -513,7 +518,7 @@ int main(int argc, char** argv)
             const size_t comma = rest.find(',');
             const std::string name = rest.substr(0, comma);
             bool known = false;
-            for (const Structure& s : structures())
+            for (const Entrant& s : structures())
                 known = known || s.name == name;
             if (!known && !(name.rfind("embree", 0) == 0 && !have_embree()))
                 throw InputError("--structures: unknown structure '" + name + "'");

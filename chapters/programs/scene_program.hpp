@@ -18,6 +18,7 @@
 #include "common/output.hpp"
 #include "common/png.hpp"
 #include "common/scene_file.hpp"
+#include "programs/structures.hpp"
 
 #include <algorithm>
 #include <functional>
@@ -72,11 +73,10 @@ struct SceneProgram {
         std::string caption;
     };
     std::vector<Heat> heat;
-    // The accelerator for a scene's objects (nullptr: brute force).
-    std::function<std::unique_ptr<Accelerator>(const Objects&)> make;
-    // What --stats adds to the render's lines: accel=<accel_name()>, objects=N, the counters of
+    // The structure --accel chose, which the program builds for a scene's objects (nullptr: brute
+    // force). What --stats adds to the render's lines: accel=<its name>, objects=N, the counters of
     // stats_counters (name=count), then the structure's own report (Accelerator::report).
-    std::function<std::string()> accel_name;
+    const StructureChoice* structure;
     std::vector<std::pair<std::string, Counter>> stats_counters;
     // Structures the figure compares (chapter 10: the grid, the hierarchy of grids and the BVH):
     // when given, the figure is the render beside one heat map for each, on one scale, in place of
@@ -185,7 +185,7 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
     const auto stats = [&](StatsPrinter base, const Accelerator* accel, int objects) {
         return [=, &program](std::ostream& out, const Counts& counts, double seconds) {
             base(out, counts, seconds);
-            out << "accel=" << program.accel_name() << '\n' << "objects=" << objects << '\n';
+            out << "accel=" << program.structure->accel << '\n' << "objects=" << objects << '\n';
             for (const auto& [name, counter] : program.stats_counters)
                 out << name << '=' << counted(counts, counter) << '\n';
             if (accel)
@@ -195,7 +195,7 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
     if (o.classic) {
         classic::ClassicScene scene = classic::classic_scene(file.scene, o.two_sided);
         const Objects objects = objects_of(scene.lit, lit_tests);
-        const std::unique_ptr<Accelerator> accel = program.make(objects);
+        const std::unique_ptr<Accelerator> accel = program.structure->make(objects);
         scene.lit.accelerator = accel.get();
         CostMap corners(width + 1, height + 1, heat.counter);
         return write_figure(common, [&] {
@@ -209,7 +209,7 @@ inline int render_scene_program(const SceneProgram& program, const CommonOptions
         note_unmodelled_materials(file.scene, program.name);
     LitScene scene = lit_scene(file.scene);
     const Objects objects = objects_of(scene, lit_tests);
-    const std::unique_ptr<Accelerator> accel = program.make(objects);
+    const std::unique_ptr<Accelerator> accel = program.structure->make(objects);
     scene.accelerator = accel.get();
     check_writable(common.out, "PNG");
     const Comparison comparison = figure ? compare_structures(program, file, scene, objects) : Comparison{};
@@ -244,6 +244,37 @@ inline int finish_scene_program(const SceneProgram& program, const CommonOptions
         return 0;
     }
     return render_scene_program(program, common, o, cli);
+}
+
+// What a program of chapters 07-10 says of itself in --help: one line, what --sweep measures, and
+// where it writes.
+struct SceneProgramHelp {
+    std::string summary, sweep;
+    std::string csv = "where --sweep writes its table";
+};
+
+// The main of a program of chapters 07-10, whose Options hold `common`, `scene`, `structure` (a
+// StructureChoice) and `sweep`: its command line (the common options, the scene program's, --accel
+// and --lambda, the chapter's own from `own_options`, --sweep's), parsed; the structure's options
+// and the chapter's own checked (`own_checks`); then the figure, a scene file or the sweep.
+template <class Options>
+int scene_program_main(int argc, char** argv, Options& o, const SceneProgram& program, const SceneProgramHelp& help,
+                       float most_lambda, const std::function<void(CommandLine&)>& own_options,
+                       const std::function<void(const CommandLine&)>& own_checks,
+                       const std::function<void(const CommandLine&)>& sweep)
+{
+    CommandLine cli = program_command_line(program.name, help.summary, o.common);
+    add_scene_program_options(cli, o.scene, program);
+    o.structure.add_options(cli, most_lambda);
+    if (own_options)
+        own_options(cli);
+    add_sweep_options(cli, o.sweep, help.sweep, help.csv);
+    if (!cli.parse(argc, argv, std::cout))
+        return 0;
+    o.structure.chosen(cli);
+    if (own_checks)
+        own_checks(cli);
+    return finish_scene_program(program, o.common, o.scene, cli, o.sweep, [&] { sweep(cli); });
 }
 
 }  // namespace rt

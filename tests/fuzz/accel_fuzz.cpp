@@ -1,12 +1,10 @@
 // libFuzzer target for the acceleration structures: any bytes make a small legal scene (spheres and
 // triangles, coincident, degenerate, huge beside tiny, flat in a plane, far from the origin) and a
-// few rays, and every structure of chapters 07-10 (the grid, the grid with mailboxes, the hashed
-// grid, the hierarchy of grids, the BVH and its 4-wide form), at a density the bytes choose, must answer every ray as
-// brute force does: the same object at the same t, bit for bit, and the same any-hit answer.
+// few rays, and every structure of the registry (chapter 10's list, programs/structures.hpp), at a
+// density the bytes choose, must answer every ray as brute force does: the same object at the same
+// t, bit for bit, and the same any-hit answer.
 // A crash, a sanitizer report, an exception or a disagreement is a finding.
-#include "08_mailboxing/figure.hpp"
 #include "10_hierarchies/figure.hpp"
-#include "10_hierarchies/wide_bvh.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -97,14 +95,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (list.size() == 0)
         return 0;
     const float lambda = 0.25f * static_cast<float>(1 + bytes.next() % 32);
+    // Every structure of the registry (programs/structures.hpp) but brute force, the reference, at
+    // the density the bytes choose relative to its default, with a leaf size they choose.
+    StructureTuning tuning;
+    tuning.leaf_size = 1 + static_cast<int>(bytes.next() % 4);
     std::vector<std::pair<std::string, std::unique_ptr<Accelerator>>> structures;
-    structures.emplace_back("grid", ch07::make_accelerator("grid", list, lambda));
-    structures.emplace_back("grid with mailboxes", ch08::make_accelerator("grid", true, list, lambda));
-    structures.emplace_back("hashed grid", ch09::make_accelerator("hashed", list, 16.0f * lambda, 0));
-    structures.emplace_back("hierarchy of grids", std::make_unique<HGridAccel>(list, HGridSettings{lambda, 1 + bytes.next() % 4, 2}));
-    const BvhSettings tree{1 + static_cast<int>(bytes.next() % 4)};
-    structures.emplace_back("BVH", std::make_unique<BvhAccel>(list, tree));
-    structures.emplace_back("4-wide BVH", std::make_unique<WideBvhAccel>(list, tree));
+    for (const Structure& s : beside_brute_force(ch10::structures())) {
+        tuning.lambda = s.default_lambda * lambda / ch07::default_lambda;
+        structures.emplace_back(s.name, s.make(list, tuning));
+    }
     const int rays = 1 + bytes.next() % 16;
     for (int r = 0; r < rays; ++r) {
         const point3 origin = bytes.point(far);

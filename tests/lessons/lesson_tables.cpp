@@ -6,6 +6,12 @@
 //
 // A block is `<!-- table NAME [timed: header; header] -->`, the table, its caption, and
 // `<!-- end table -->`. refresh finds the lessons as chapters/*/README.md under --kit (default: .).
+//
+// A number the prose states is a cell of one of those tables, marked where it stands:
+// `<!-- cell NAME [KEY] COLUMN -->3,645<!-- /cell -->`, where KEY is the row's first cells, joined by
+// ", " ("8, 2": leaf size 8, depth limit 2), and COLUMN the column's header. refresh writes the
+// code's cell there; check holds it to the code's, as it holds the tables (a timed column's cell
+// is refreshed, not compared).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -26,6 +32,15 @@ struct Block {
 };
 
 const std::string open_marker = "<!-- table ", close_marker = "<!-- end table -->";
+const std::string cell_marker = "<!-- cell ", cell_close = "<!-- /cell -->";
+
+// A number of the prose, marked as a cell of a table: where it stands and what it names.
+struct Cell {
+    std::string table, key, column;
+    std::string value;   // the text between the markers
+    int line = 0;        // 1-based
+    size_t value_at = 0; // where the value starts in its line
+};
 
 std::vector<std::string> split(const std::string& text, char by)
 {
@@ -95,6 +110,78 @@ std::vector<std::vector<std::string>> rows_of(const Block& b)
     return rows;
 }
 
+// The marked cells of a lesson's lines; a marker that does not parse is an error naming its line.
+std::vector<Cell> cells_of(const fs::path& path, const std::vector<std::string>& lines)
+{
+    std::vector<Cell> cells;
+    for (size_t k = 0; k < lines.size(); ++k)
+        for (size_t at = lines[k].find(cell_marker); at != std::string::npos;
+             at = lines[k].find(cell_marker, at + 1)) {
+            const std::string& line = lines[k];
+            const std::string where = path.string() + ":" + std::to_string(k + 1) + ": ";
+            const size_t open = line.find(" [", at), close = line.find("] ", at), end = line.find(" -->", at);
+            const size_t stop = end == std::string::npos ? end : line.find(cell_close, end);
+            if (open == std::string::npos || close == std::string::npos || end == std::string::npos ||
+                stop == std::string::npos || !(open < close && close < end))
+                throw std::runtime_error(where + "a cell marker is not '" + cell_marker + "TABLE [KEY] COLUMN -->" +
+                                         "value" + cell_close + "'");
+            Cell c;
+            c.table = line.substr(at + cell_marker.size(), open - at - cell_marker.size());
+            c.key = line.substr(open + 2, close - open - 2);
+            c.column = line.substr(close + 2, end - close - 2);
+            c.value_at = end + 4;
+            c.value = line.substr(c.value_at, stop - c.value_at);
+            c.line = static_cast<int>(k) + 1;
+            cells.push_back(c);
+        }
+    return cells;
+}
+
+// The code's value of a marked cell, and whether its column is timed; an error message instead
+// when the table, the row or the column is not the code's.
+struct Lookup {
+    std::string value, error;
+    bool timed = false;
+};
+
+Lookup look_up(const std::vector<Block>& code, const Cell& c)
+{
+    Lookup l;
+    for (const Block& b : code) {
+        if (b.name != c.table)
+            continue;
+        const auto rows = rows_of(b);
+        if (rows.size() < 2) {
+            l.error = "table " + c.table + " has no rows";
+            return l;
+        }
+        const std::vector<std::string>& header = rows.front();
+        size_t column = header.size();
+        for (size_t h = 0; h < header.size(); ++h)
+            if (header[h] == c.column)
+                column = h;
+        if (column == header.size()) {
+            l.error = "table " + c.table + " has no column '" + c.column + "'";
+            return l;
+        }
+        for (const std::string& t : b.timed)
+            l.timed = l.timed || t == c.column;
+        for (size_t r = 2; r < rows.size(); ++r) {
+            std::string key;
+            for (size_t k = 0; k < rows[r].size() && key.size() < c.key.size(); ++k)
+                key += (k == 0 ? "" : ", ") + rows[r][k];
+            if (key == c.key && column < rows[r].size()) {
+                l.value = rows[r][column];
+                return l;
+            }
+        }
+        l.error = "table " + c.table + " has no row [" + c.key + "]";
+        return l;
+    }
+    l.error = "no table " + c.table + " among the sweep's";
+    return l;
+}
+
 // Every difference between the lesson's block and the code's, in the columns that are not timed.
 int compare(const fs::path& lesson, const Block& in_lesson, const Block& from_code)
 {
@@ -147,8 +234,21 @@ int check(const fs::path& tables, const fs::path& lesson)
             ++problems;
         }
     }
-    std::cout << lesson.string() << ": " << code.size() << " table(s) against the code, " << problems
-              << " difference(s)\n";
+    const std::vector<Cell> cells = cells_of(lesson, read_lines(lesson));
+    for (const Cell& c : cells) {
+        const Lookup l = look_up(code, c);
+        const std::string where = lesson.string() + ":" + std::to_string(c.line) + ": the prose's cell " + c.table +
+                                  " [" + c.key + "] " + c.column;
+        if (!l.error.empty()) {
+            std::cout << where << ": " << l.error << '\n';
+            ++problems;
+        } else if (!l.timed && l.value != c.value) {
+            std::cout << where << ": the lesson says " << c.value << ", the code gives " << l.value << '\n';
+            ++problems;
+        }
+    }
+    std::cout << lesson.string() << ": " << code.size() << " table(s) and " << cells.size()
+              << " cell(s) of prose against the code, " << problems << " difference(s)\n";
     return problems == 0 ? 0 : 1;
 }
 
@@ -182,6 +282,18 @@ int refresh(const std::vector<fs::path>& tables, const fs::path& kit)
             }
         }
         out.insert(out.end(), lines.begin() + static_cast<long>(next), lines.end());
+        // The prose's cells, from the tables as they now stand in the lesson.
+        const std::vector<Block> now = blocks_of(lesson, out);
+        std::vector<Cell> cells = cells_of(lesson, out);
+        // From the end, so that a line's earlier cells keep their place.
+        for (auto c = cells.rbegin(); c != cells.rend(); ++c) {
+            const Lookup l = look_up(now, *c);
+            if (!l.error.empty())
+                std::cout << lesson.string() << ":" << c->line << ": the prose's cell " << c->table << " [" << c->key
+                          << "] " << c->column << ": " << l.error << ": not refreshed\n";
+            else
+                out[static_cast<size_t>(c->line - 1)].replace(c->value_at, c->value.size(), l.value);
+        }
         std::ofstream file(lesson);
         for (const std::string& line : out)
             file << line << '\n';

@@ -3,10 +3,8 @@
 // chapters 07-10 must build them within its budgets and answer every seeded ray as brute force does
 // (object and t), without testing many times more objects than brute force; the hashed grid must
 // say when its build holds many times the dense grid's memory (memory_weighed.hpp).
-#include "08_mailboxing/figure.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "10_hierarchies/figure.hpp"
-#include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
 #include "tests/structures/memory_weighed.hpp"
 
@@ -19,25 +17,13 @@ using namespace rt::grader;
 
 namespace {
 
-struct Structure {
-    std::string name;
-    float lambda;
-    agreement::BuildFn build;
-};
+// Every structure of the registry (programs/structures.hpp) but brute force, the reference.
+Structures structures() { return beside_brute_force(ch10::structures()); }
 
-std::vector<Structure> structures()
+// How agreement::compare builds `s` at a density.
+agreement::BuildFn built_at(const Structure& s)
 {
-    return {
-        {"grid", ch07::default_lambda, [](const Objects& o, float l) { return ch07::make_accelerator("grid", o, l); }},
-        {"grid with mailboxes", ch07::default_lambda,
-         [](const Objects& o, float l) { return ch08::make_accelerator("grid", true, o, l); }},
-        {"hashed grid", ch09::default_hashed_lambda,
-         [](const Objects& o, float l) { return ch09::make_accelerator("hashed", o, l, 0); }},
-        {"hierarchy of grids", ch07::default_lambda,
-         [](const Objects& o, float l) { return std::make_unique<HGridAccel>(o, HGridSettings{l}); }},
-        {"BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<BvhAccel>(o, BvhSettings{}); }},
-        {"4-wide BVH", 0.0f, [](const Objects& o, float) { return std::make_unique<WideBvhAccel>(o); }},
-    };
+    return [s](const Objects& objects, float lambda) { return s.make(objects, at_density(lambda)); };
 }
 
 // Why 1 GB: the most a structure may take for a scene below 100k objects, whatever its shape.
@@ -56,7 +42,7 @@ std::unique_ptr<Accelerator> built_saying(const Structure& s, const Objects& obj
     std::vector<std::string> said;
     {
         const NoticeCapture capture;
-        built = s.build(objects, lambda);
+        built = s.make(objects, at_density(lambda));
         said = capture.lines();
     }
     if (const auto* hashed = dynamic_cast<const HashedGrid*>(built.get()))
@@ -84,16 +70,16 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
 {
     const Objects objects = objects_of(scene, lit_tests);
     for (const Structure& s : structures()) {
-        INFO(scene_name << " (" << objects.size() << " objects) through the " << s.name);
+        INFO(scene_name << " (" << objects.size() << " objects) through " << s.name << " (" << s.what << ")");
         // Brute force's work on the rays, then the structure's, from the counters.
         reset_counters();
         agreement::Disagreement brute_d;
-        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene, view, s.lambda,
-                           rays, 7, brute_d);
+        agreement::compare({"brute force", [](const Objects&, float) { return std::make_unique<BruteForce>(); }}, scene,
+                           view, s.default_lambda, rays, 7, brute_d);
         const std::uint64_t both_brute = counted(total_counts(), Counter::intersection_tests);
         reset_counters();
         agreement::Disagreement d;
-        agreement::compare({"the " + s.name, s.build}, scene, view, s.lambda, rays, 7, d);
+        agreement::compare({s.name, built_at(s)}, scene, view, s.default_lambda, rays, 7, d);
         const std::uint64_t with_structure = counted(total_counts(), Counter::intersection_tests);
         // compare() asks brute force too: the structure's own tests are the difference.
         const double brute_tests = static_cast<double>(both_brute) / 2.0;
@@ -104,7 +90,7 @@ void check(const std::string& scene_name, const LitScene& scene, const NffView& 
         INFO("tests: brute force " << brute_tests << ", the structure " << structure_tests << " (at most " << bound.times
                                    << " times brute force's, and " << bound.per_ray << " a ray more)");
         CHECK(structure_tests <= bound.times * brute_tests + bound.per_ray * d.rays);
-        const std::unique_ptr<Accelerator> built = built_saying(s, objects, s.lambda);
+        const std::unique_ptr<Accelerator> built = built_saying(s, objects, s.default_lambda);
         INFO("bytes: " << built->bytes());
         CHECK(built->bytes() <= max_bytes);
     }
@@ -115,6 +101,16 @@ LitScene with_material()
     LitScene scene;
     scene.add_material({});
     return scene;
+}
+
+// A point drawn uniformly from `low` to `low + size` on each axis, x, y and z in that order. One draw
+// a statement: a constructor's arguments are evaluated in an order each compiler picks.
+vec3 drawn(Rng& rng, const vec3& low, const vec3& size)
+{
+    const float x = size.x * rng.next_float() + low.x;
+    const float y = size.y * rng.next_float() + low.y;
+    const float z = size.z * rng.next_float() + low.z;
+    return vec3(x, y, z);
 }
 
 NffView looking_at(const point3& at, float distance)
@@ -137,7 +133,7 @@ void check_ray(const LitScene& scene, const Ray& ray, float lambda)
             const std::unique_ptr<Accelerator> built = built_saying(s, objects, lambda);
             ObjectHit got;
             const bool got_found = built->closest(ray, range, objects, got);
-            INFO("the " << s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
+            INFO(s.name << ": " << show(ray) << ", t in (" << range.min << ", " << range.max
                  << "): brute force finds " << agreement::answer(want_found, want) << ", the structure "
                  << agreement::answer(got_found, got));
             CHECK(got_found == want_found);
@@ -324,13 +320,8 @@ TEST_CASE("300 spheres 100 across, 1e7 from the origin, build cells no finer tha
     // steps (9.5 units) spread over cells 2 units wide.
     LitScene far = with_material();
     Rng rng(9, 0);
-    for (int k = 0; k < 300; ++k) {
-        // One draw a statement: a constructor's arguments are evaluated in an order each compiler picks.
-        const float x = 100 * rng.next_float() - 50;
-        const float y = 100 * rng.next_float() - 50;
-        const float z = 100 * rng.next_float() - 50;
-        far.add_sphere({point3(1e7f) + vec3(x, y, z), 2.0f}, 0);
-    }
+    for (int k = 0; k < 300; ++k)
+        far.add_sphere({point3(1e7f) + drawn(rng, vec3(-50), vec3(100)), 2.0f}, 0);
     check("300 spheres 1e7 from the origin", far, looking_at(point3(1e7f), 250.0f), 200);
     const Objects objects = objects_of(far, lit_tests);
     const HashedGridStats stats = HashedGrid(objects, ch09::default_hashed_lambda).stats();
@@ -418,19 +409,14 @@ TEST_CASE("a dense cluster beside one far sphere costs every structure no more t
     // it apart, and every structure would test about twice brute force's objects.
     LitScene cluster = with_material();
     Rng rng(43, 0);
-    for (int k = 0; k < 100000; ++k) {
-        // One draw a statement (argument order is each compiler's choice).
-        const float x = 0.01f * rng.next_float() - 0.005f;
-        const float y = 0.01f * rng.next_float() - 0.005f;
-        const float z = 0.01f * rng.next_float() - 0.005f;
-        cluster.add_sphere({{x, y, z}, 2e-4f}, 0);
-    }
+    for (int k = 0; k < 100000; ++k)
+        cluster.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
     cluster.add_sphere({{1000, 0, 0}, 1}, 0);
     NffView view;
     view.from = point3(0.004f, 0.006f, 0.025f);
     view.at = point3(0.0f);
     check("a cluster 0.01 across beside a sphere at x = 1000", cluster, view, 40, [](const std::string& structure) {
-        return WorkBound{structure == "BVH" || structure == "4-wide BVH" ? 0.1 : 1.0, 0.0};
+        return WorkBound{structure == "bvh" || structure == "bvh4" ? 0.1 : 1.0, 0.0};
     });
 }
 
@@ -443,15 +429,14 @@ TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hi
     huge.add_triangle({{-1e5f, -1, -1e5f}, {0, -1, 1e5f}, {1e5f, -1, -1e5f}}, 0);
     Rng rng(44, 0);
     for (int k = 0; k < 5000; ++k) {
-        const float x = 2 * rng.next_float() - 1;
-        const float y = 1.9f * rng.next_float() - 0.9f;
-        const float z = 2 * rng.next_float() - 1;
+        const vec3 p = drawn(rng, vec3(-1, -0.9f, -1), vec3(2, 1.9f, 2));
+        const float x = p.x, y = p.y, z = p.z;
         huge.add_triangle({{x, y, z}, {x + 1e-3f, y, z}, {x, y + 1e-3f, z + 4e-4f}}, 0);
     }
     NffView view;
     view.from = point3(0, 2.5f, 3);
     view.at = point3(0, -0.5f, 0);
     check("a triangle 2e5 across over 5,000 triangles 1e-3 across", huge, view, 200, [](const std::string& structure) {
-        return structure == "hierarchy of grids" ? WorkBound{1.0, 0.0} : WorkBound{};
+        return structure == "hgrid" ? WorkBound{1.0, 0.0} : WorkBound{};
     });
 }
