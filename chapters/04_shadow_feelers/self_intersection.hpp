@@ -81,7 +81,10 @@ inline std::vector<SurfacePoint> surface_points(const ScaledScene& scene, Surfac
 {
     std::vector<SurfacePoint> points;
     Rng rng(seed, 40);
-    while (static_cast<int>(points.size()) < count) {
+    // Aimed rays miss only within rounding of an edge, rarely; a hit test that misses them all (a
+    // stub, a mistake) must end the search rather than loop, and its caller sees fewer points.
+    const long long most_tries = 4LL * count + 64;
+    for (long long tries = 0; static_cast<int>(points.size()) < count && tries < most_tries; ++tries) {
         if (surface == Surface::sphere) {
             const vec3 outward = extremes::random_unit_vector(rng);
             const point3 target = scene.centre + scene.sphere.radius * outward;

@@ -60,6 +60,9 @@ void check_no_rehits(const std::string& what, self_intersection::Surface surface
     for (const float scale : scales) {
         const ScaledScene scene = scaled_scene(scale);
         const std::vector<SurfacePoint> points = surface_points(scene, surface, count, 7);
+        INFO(what << " at scale S = " << scale << ": rays aimed at the surface found " << points.size() << " of "
+             << count << " points on it; expected all (the hit test of 02.4 or 02.5 misses them)");
+        REQUIRE(static_cast<int>(points.size()) == count);
         const Score score = measure(scene, points, Offset::robust, side, 8);
         std::ostringstream first;
         if (score.first_rehit != Score::npos)

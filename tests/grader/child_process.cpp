@@ -30,11 +30,13 @@ const char* null_device()
 #endif
 }
 
-void limit_cpu_time(double cpu_seconds, int code)
+void limit_cpu_time(double cpu_seconds, int code, std::function<void()> last_words)
 {
-    std::thread([cpu_seconds, code] {
+    std::thread([cpu_seconds, code, last_words] {
         while (process_cpu_seconds() < cpu_seconds)
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (last_words)
+            last_words();
         std::_Exit(code);
     }).detach();
 }

@@ -3,6 +3,7 @@
 // that case only, and no platform needs fork.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,10 @@ ChildStatus run_child(const std::string& program, const std::vector<std::string>
 double process_cpu_seconds();
 
 // Stops this process with exit status `code` once it has used `cpu_seconds` of CPU time: a thread
-// that looks every few milliseconds. A case's limit in CPU time is the same on a busy machine and
-// a quiet one, where a wall-clock limit would stop a correct case that waited for a core.
-void limit_cpu_time(double cpu_seconds, int code);
+// that looks every few milliseconds, and calls `last_words` (if any) just before. A case's limit in
+// CPU time is the same on a busy machine and a quiet one, where a wall-clock limit would stop a
+// correct case that waited for a core.
+void limit_cpu_time(double cpu_seconds, int code, std::function<void()> last_words = {});
 
 // The file that discards what is written to it ("/dev/null", or "NUL" on Windows).
 const char* null_device();

@@ -45,6 +45,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <regex>
 #include <set>
@@ -182,7 +184,9 @@ public:
 
     void testCaseEnded(const Catch::TestCaseStats& stats) override
     {
-        const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0;
+        current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
+        const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0 &&
+                            !rests_on_earlier_stub(current_);
         if (passed)
             current_.status = CaseStatus::passed;
         current_.score = passed ? current_.max_score : 0;
@@ -194,7 +198,6 @@ public:
         // An exercise's case (not a picture or agreement case) points to the hint for its trap.
         if (!passed && current_.number.size() > 3 && std::isdigit(static_cast<unsigned char>(current_.number[3])))
             current_.output += "the trap this case checks: ./build/grade/hint " + current_.number + " 2\n";
-        current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
         if (current_.number.empty())
             return;
         results.push_back(current_);
@@ -292,6 +295,19 @@ void quiet_catch_report(Catch::Session& session)
     session.useConfigData(data);  // (the Config made from the command line is made again)
 }
 
+// Where a case's process stopped at its CPU limit leaves the stubs that had run: beside the results.
+std::string stubs_path() { return results_path + ".stubs"; }
+
+// The stubs a stopped case's process left (and the file gone), or "".
+std::string stubs_left_by_a_stopped_case()
+{
+    std::string stubs;
+    if (std::ifstream in(stubs_path()); in)
+        std::getline(in, stubs);
+    std::remove(stubs_path().c_str());
+    return stubs;
+}
+
 size_t results_so_far()
 {
     std::vector<CaseResult> got;
@@ -307,6 +323,7 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
     std::string last_stub;  // an exercise still its stub is said once, not once per case
     for (const CaseResult& planned : planned_cases(session)) {
         const size_t before = results_so_far();
+        std::remove(stubs_path().c_str());
         std::cout.flush();
         const std::vector<std::string> args = {catch_literal(planned.name), "--out", null_device(),
                                                "--results", results_path, "--artifacts", artifacts_dir,
@@ -319,6 +336,7 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
             continue;
         }
         CaseResult lost = planned;
+        lost.stubs = stubs_left_by_a_stopped_case();
         const std::string limit = std::to_string(cpu_limit);
         switch (status.end) {
         case ChildStatus::End::exited:
@@ -348,7 +366,7 @@ void run_isolated(Catch::Session& session, const std::string& program, int cpu_l
             break;
         }
         append_result(results_path, lost);
-        print_case(std::cout, lost);
+        say_case(std::cout, lost, last_stub);
     }
     read_results(results_path, results);
 }
@@ -385,7 +403,11 @@ int main(int argc, char* argv[])
     if (cpu_limit > 0.0) {
         // One case's process: its result goes to the file the grader reads, which holds the cases
         // before it; the grader prints the verdict and the table.
-        limit_cpu_time(cpu_limit, exit_cpu_limit);
+        // A case stopped at its limit often waits on a stub (a search that a stub's miss never
+        // ends): it leaves the stubs that ran so far, for the grader to say which.
+        limit_cpu_time(cpu_limit, exit_cpu_limit, [] {
+            std::ofstream(stubs_path()) << rt::join_words(rt::stubs_that_ran(), " ");
+        });
         session.run();
         return 0;
     }

@@ -53,6 +53,16 @@ std::string stub_verdict(const CaseResult& r)
            stub_words.substr(3) + (several ? "s" : "");
 }
 
+bool rests_on_earlier_stub(const CaseResult& r)
+{
+    std::istringstream words(r.stubs);
+    std::string w;
+    while (words >> w)
+        if (chapter_of(w) < chapter_of(r.number))
+            return true;
+    return false;
+}
+
 std::vector<CaseResult> summarize(const std::vector<CaseResult>& results)
 {
     // Chapters in the order they came, each with its cases.
