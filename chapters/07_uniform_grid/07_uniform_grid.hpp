@@ -99,8 +99,9 @@ cell3 grid_resolution(const Bounds& box, int objects, float lambda, int max_per_
 // nearest cell inside, each index held to 0 .. n - 1.
 // The lesson's section "A point's cell, and an object's cells (EXERCISES 07.2 and 07.3)" derives
 // it.
-// Precision: float's; the boundaries are where the grid's own box.min and cell_size place them,
-// and a point one float step either side of one lands on its own side.
+// Precision: boundary i of an axis is where float's (p - min) / cell_size, each operation rounded to
+// float, reaches the whole number i (min + i cell_size rounded to float can lie a float step to
+// either side of it); the point there is in cell i, the float below it in cell i - 1.
 // Example: in the grid of 4 x 2 x 5 cells of 0.5 x 1 x 0.2 over the box from (-1, 0, 2) to
 // (1, 2, 3), (0.3, 1.5, 2.75) is in cell (2, 1, 3); (-0.5, 1, 2), on boundaries of all three axes,
 // in (1, 1, 0); the far corner (1, 2, 3) in (3, 1, 4); (5, -3, 2.5), outside, in (3, 0, 2).

@@ -1,6 +1,8 @@
 // EXERCISES 07.2 and 07.3: the cell of a point, and the cells a box overlaps.
 #include "tests/ch07/describe.hpp"
 
+#include "common/random.hpp"
+
 using namespace rt;
 using namespace rt::grader;
 
@@ -26,7 +28,53 @@ void check_range(const Bounds& b, const cell3& first, const cell3& last, const c
     CHECK(got.last == last);
 }
 
+// The point on boundary i of an axis as the contract defines it: the least float whose quotient
+// (p - min) / size, each operation in float, is at least i. The quotient never decreases as p
+// grows, so stepping from min + i size (rounded to float, a few float steps away) finds it.
+float point_on_boundary(float min, float size, int i)
+{
+    const auto quotient = [&](float p) { return (p - min) / size; };
+    const float whole = static_cast<float>(i);
+    float p = min + whole * size;
+    while (quotient(p) >= whole)
+        p = std::nextafter(p, -infinity);
+    while (quotient(p) < whole)
+        p = std::nextafter(p, infinity);
+    return p;
+}
+
 }  // namespace
+
+GRADED_TEST("cell_of: on grids whose division is inexact, the point where float's (p - min) / size reaches i is in cell i, the float below it in cell i - 1", "07.2", 2)
+{
+    // Grids like a scene's: min in [-10, 10], cells 0.01 to 3 wide, 2 to 64 of them. On about one
+    // grid in six, min + i size rounded to float is not the point on boundary i (the contract's
+    // "Precision"), so a cell that follows it, or a quotient formed another way, misses here.
+    Rng rng(7, 72);
+    for (int g = 0; g < 300; ++g) {
+        point3 min, size;
+        cell3 n, i;
+        for (int a = 0; a < 3; ++a) {
+            min[a] = -10.0f + 20.0f * rng.next_float();
+            size[a] = 0.01f + 2.99f * rng.next_float();
+            n[a] = 2 + static_cast<int>(rng.next_u32() % 63u);
+            i[a] = 1 + static_cast<int>(rng.next_u32() % static_cast<std::uint32_t>(n[a] - 1));
+        }
+        const GridShape shape = grid_shape({min, min + vec3(n) * size}, n);
+        point3 on, below;
+        for (int a = 0; a < 3; ++a) {
+            on[a] = point_on_boundary(shape.box.min[a], shape.cell_size[a], i[a]);
+            below[a] = std::nextafter(on[a], -infinity);
+        }
+        const cell3 got_on = cell_of(shape, on), got_below = cell_of(shape, below);
+        INFO("07.2 cell_of(" << show(shape) << ", " << show(on) << "), the point on boundaries " << show(i)
+             << ": got " << show(got_on) << ", expected " << show(i) << "; and one float step below it, "
+             << show(below) << ": got " << show(got_below) << ", expected " << show(i - cell3(1))
+             << " (the contract's boundary: where float's (p - min) / cell_size reaches a whole number)");
+        REQUIRE(got_on == i);
+        REQUIRE(got_below == i - cell3(1));
+    }
+}
 
 GRADED_TEST("cell_of: a point inside the grid lies in the cell floor((p - min) / size) says", "07.2", 3)
 {
