@@ -200,6 +200,18 @@ if(NOT restore_step OR NOT save_step OR NOT restore_step LESS prebuild_step OR N
    OR NOT step_${restore_step}_with_key MATCHES "hashFiles\\(")
   fail("the cache of build/grade should be restored, then the kit built, then saved, before grading")
 endif()
+# A failed picture case's images reach the student: after grading, whatever the grade, a step
+# uploads the results folder (the pictures, and the report.html the grade step copies there).
+set(upload_step "")
+foreach(k RANGE 1 ${n_steps})
+  if(step_${k}_uses MATCHES "^actions/upload-artifact@")
+    set(upload_step ${k})
+  endif()
+endforeach()
+if(NOT upload_step OR NOT grade_step LESS upload_step OR NOT step_${upload_step}_if STREQUAL "always()"
+   OR NOT step_${upload_step}_with_path STREQUAL "build/grade/grade-results")
+  fail("after the grade step, a step (if: always()) should upload build/grade/grade-results as an artifact")
+endif()
 message(STATUS "classroom.yml: ${n_steps} steps, the reporter's runner `grade`")
 
 # The same file as PyYAML reads it, where python3 has it: every step's name, id, uses, if and run.
@@ -387,6 +399,9 @@ if(NOT untouched_summary MATCHES "## Points: 0 / ${untouched_max}\n" OR NOT unto
 endif()
 if(NOT grade_log MATCHES "total +0 / ${untouched_max}")
   fail("untouched: the grade step's log should show the points table:\n${grade_log}")
+endif()
+if(NOT EXISTS "${handout}/build/grade/grade-results/report.html")
+  fail("untouched: the grade step should leave report.html in build/grade/grade-results, which the artifact uploads")
 endif()
 
 # 2. The solution as the student's file, the kit's build kept from push 1 (a cache hit): every
