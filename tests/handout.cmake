@@ -3,7 +3,7 @@
 # contracts at the level the course chooses.
 #
 #   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] [-D CONTRACTS=behaviour|detailed]
-#         [-D CLASSROOM_CHAPTERS="01;02"] [-D CLASSROOM=OFF] -P tests/handout.cmake
+#         [-D CLASSROOM_CHAPTERS="01;02"] [-D CLASSROOM=OFF] [-D SOLVED="01;02"] -P tests/handout.cmake
 #
 # HINT_TIERS (default 3, all): the tiers of every chapters/NN_name/hints.md kept, 1 the idea, 2 the
 # trap, 3 the walk-through; 0 leaves the hints out.
@@ -14,6 +14,10 @@
 # The handout is also a GitHub Classroom template: .github/workflows/classroom.yml grades every push
 # (tests/classroom/classroom.yml) of the chapters in CLASSROOM_CHAPTERS (default: all), with a copy
 # of the handed-out stubs in .github/classroom/stubs; CLASSROOM=OFF leaves both out.
+# SOLVED (default none): chapters handed out solved, for a course that starts later or skips
+# some: their exercises/ files are the reference answers as given code (no marker, no stub), and
+# they are left out of grading (Classroom's chapters and the grade preset's RT_GRADE_CHAPTERS), so
+# a later chapter's cases run on answers that are right.
 get_filename_component(kit "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT OUT)
   message(FATAL_ERROR "handout: say where to write it: -D OUT=<folder>")
@@ -39,6 +43,63 @@ foreach(entry CMakeLists.txt CMakePresets.json README.md .gitignore .ci .devcont
   endif()
 endforeach()
 file(REMOVE_RECURSE "${OUT}/tests/mutants")
+# The solved chapters: each solution with its cutting marks taken out (its own header, the
+# SOLUTION marker lines and the STUB lines, which are the stub's code), the code between kept.
+if(NOT "${SOLVED}" MATCHES "^([0-9][0-9](;[0-9][0-9])*)?$")
+  message(FATAL_ERROR "handout: SOLVED is a list of chapter numbers, \"01;02\", not '${SOLVED}'")
+endif()
+set(unsolved "")
+file(GLOB kit_exercises RELATIVE "${kit}/exercises" "${kit}/exercises/[0-9][0-9]_*.cpp")
+list(SORT kit_exercises)
+foreach(file IN LISTS kit_exercises)
+  string(SUBSTRING "${file}" 0 2 nn)
+  if(NOT nn IN_LIST SOLVED)
+    list(APPEND unsolved "${nn}")
+    continue()
+  endif()
+  if(NOT EXISTS "${kit}/solutions/${file}")
+    message(FATAL_ERROR "handout: SOLVED names chapter ${nn}, but this kit has no solutions/${file} to give")
+  endif()
+  file(READ "${kit}/solutions/${file}" text)
+  # The solution's own header (how the cutter works) goes, up to the first SOLUTION END.
+  string(FIND "${text}" "// SOLUTION END\n" header_end)
+  if(text MATCHES "^// SOLUTION BEGIN\n" AND header_end GREATER 0)
+    math(EXPR header_end "${header_end} + 16")
+    string(SUBSTRING "${text}" ${header_end} -1 text)
+  endif()
+  string(REGEX REPLACE "\n[ \t]*// (SOLUTION (BEGIN|END)|STUB)[^\n]*" "" text "\n${text}")
+  string(REGEX MATCH "\n[ \t]*// (SOLUTION|STUB)" left "${text}")
+  string(REGEX REPLACE "^\n" "" text "${text}")
+  if(left)
+    message(FATAL_ERROR "handout: solutions/${file} keeps a cutting mark the handout could not take out")
+  endif()
+  string(REGEX REPLACE "\\.cpp$" "" chapter "${file}")
+  file(WRITE "${OUT}/exercises/${file}" "// Chapter ${chapter}, given solved in this handout: the reference
+// answers as given code, not graded. Its contracts (chapters/${chapter}/${chapter}.hpp)
+// and its lesson explain each function; the later chapters run them.
+${text}")
+endforeach()
+foreach(nn IN LISTS SOLVED)
+  file(GLOB named "${kit}/exercises/${nn}_*.cpp")
+  if(NOT named)
+    message(FATAL_ERROR "handout: SOLVED names chapter ${nn}, which this kit does not have")
+  endif()
+endforeach()
+if(SOLVED)
+  # The student's own grading leaves the solved chapters out.
+  string(JOIN ";" unsolved_list ${unsolved})
+  file(READ "${OUT}/CMakePresets.json" presets)
+  string(REPLACE "\"RT_GRADE_CHAPTERS\": \"\"" "\"RT_GRADE_CHAPTERS\": \"${unsolved_list}\"" presets "${presets}")
+  file(WRITE "${OUT}/CMakePresets.json" "${presets}")
+  if(NOT CLASSROOM_CHAPTERS)
+    set(CLASSROOM_CHAPTERS "${unsolved_list}")
+  endif()
+  foreach(nn IN LISTS CLASSROOM_CHAPTERS)
+    if(nn IN_LIST SOLVED)
+      message(FATAL_ERROR "handout: chapter ${nn} is both SOLVED and in CLASSROOM_CHAPTERS: a solved chapter is not graded")
+    endif()
+  endforeach()
+endif()
 # The handout speaks of itself, and has no solutions/ to send a student to. The README drops what
 # only the kit has: a line ending in `<!-- kit only -->`, and the lines from `<!-- kit only: begin -->`
 # to `<!-- kit only: end -->`; a mention of solutions/ left outside them stops the handout.
@@ -138,5 +199,8 @@ if(NOT DEFINED CLASSROOM OR CLASSROOM)
     set(graded "chapters ${CLASSROOM_CHAPTERS}")
   endif()
   message(STATUS "GitHub Classroom's workflow, grading ${graded}: ${OUT}/.github/workflows/classroom.yml")
+endif()
+if(SOLVED)
+  message(STATUS "chapters ${SOLVED} given solved, not graded")
 endif()
 message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints and ${CONTRACTS} contracts (${detail_blocks} step blocks ${done}): ${OUT}")

@@ -206,3 +206,45 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -S "${WORK}/tiers_0" -B "${WORK}/tier
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the handout does not configure:\n${log}")
 endif()
+
+# SOLVED: chapters handed out solved. Each solved exercises/ file is its solution with the cutting
+# marks taken out (no marker, no stub call, the solution's code whole), the Classroom stubs carry it,
+# and neither Classroom nor the grade preset grades a solved chapter. A solved chapter also in
+# CLASSROOM_CHAPTERS stops the handout. (Grading chapter 07 in such a handout, its earlier chapters
+# solved: the stubs read as chapter 07's own, never as waiting on 02's; the solution scores full.)
+set(out "${WORK}/solved")
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "SOLVED=01;02;03;04;05;06" -P "${KIT}/tests/handout.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "handout.cmake with SOLVED=01;...;06 failed:\n${log}")
+endif()
+file(GLOB solved_files RELATIVE "${out}/exercises" "${out}/exercises/0[1-6]_*.cpp")
+list(LENGTH solved_files n)
+if(NOT n EQUAL 6)
+  message(FATAL_ERROR "SOLVED=01;...;06: ${n} solved files in the handout's exercises/, not 6")
+endif()
+foreach(file IN LISTS solved_files)
+  file(READ "${out}/exercises/${file}" given)
+  file(READ "${out}/.github/classroom/stubs/${file}" classroom_copy)
+  file(STRINGS "${KIT}/solutions/${file}" solution_lines REGEX "^[ \t]*return .*;$")
+  list(GET solution_lines 0 first_return)
+  if(given MATCHES "(^|\n)[ \t]*// (SOLUTION|STUB)" OR given MATCHES "stub\\(\"" OR NOT given MATCHES "given solved in this handout")
+    message(FATAL_ERROR "SOLVED: exercises/${file} keeps a cutting mark or a stub call, or does not say it is given solved")
+  endif()
+  string(FIND "${given}" "${first_return}" at)
+  if(at EQUAL -1 OR NOT classroom_copy STREQUAL given)
+    message(FATAL_ERROR "SOLVED: exercises/${file} lacks the solution's code ('${first_return}'), or the Classroom stubs differ from it")
+  endif()
+endforeach()
+file(READ "${out}/CMakePresets.json" presets)
+file(READ "${out}/.github/workflows/classroom.yml" workflow)
+if(NOT presets MATCHES "\"RT_GRADE_CHAPTERS\": \"07;08;09;10\"" OR NOT workflow MATCHES "RT_GRADE_CHAPTERS: \"07;08;09;10\"")
+  message(FATAL_ERROR "SOLVED=01;...;06: the grade preset and Classroom should grade 07;08;09;10 alone")
+endif()
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${WORK}/solved_and_graded" -D "SOLVED=01;02" -D "CLASSROOM_CHAPTERS=02;03"
+    -P "${KIT}/tests/handout.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "chapter 02 is both SOLVED and in CLASSROOM_CHAPTERS")
+  message(FATAL_ERROR "handout.cmake graded a solved chapter (SOLVED=01;02, CLASSROOM_CHAPTERS=02;03):\n${log}")
+endif()
+message(STATUS "SOLVED=01;...;06: six chapters given solved, graded 07-10 only")
