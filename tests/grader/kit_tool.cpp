@@ -1,6 +1,7 @@
-// The kit's maintenance tool, four verbs:
+// The kit's maintenance tool, five verbs:
 //
 //   kit_tool cut SOLUTION EXERCISE        write the exercise file cut from an annotated solution
+//   kit_tool trace SOLUTION OUT           the solution, each exercise noting that it ran (below)
 //   kit_tool check-cut SOLUTION EXERCISE  exit 1 (saying where) when EXERCISE is not what cut makes
 //   kit_tool mutate MUTANT SOLUTION OUT   apply a mutant (a common mistake) to a solution
 //   kit_tool share SOLUTION               how much of each exercise's solution its stub's comments
@@ -96,6 +97,30 @@ std::string cut(const std::string& solution_path)
     }
     if (in_solution)
         throw Failure{solution_path + ":" + std::to_string(begin_line) + ": SOLUTION BEGIN is never closed"};
+    return join(out);
+}
+
+// Tracing: the solution whole, its cutting marks kept as comments, with a call
+// `rt::note_stub("NN.k")` opening the first SOLUTION block after each `// EXERCISE NN.k` mark. A
+// grader built on traced solutions then lists, per case, every exercise the case ran, of every
+// chapter (the stubs field of its results): what a chapter's lesson says its cases need.
+std::string trace(const std::string& solution_path)
+{
+    const std::vector<std::string> lines = read_lines(solution_path);
+    std::vector<std::string> out = {"#include \"common/stub.hpp\"  // (traced: rt::note_stub)"};
+    std::string exercise;  // the last EXERCISE mark not yet traced
+    for (const std::string& line : lines) {
+        std::string indent;
+        const std::string text = trim_left(line, &indent);
+        out.push_back(line);
+        if (text.rfind("// EXERCISE ", 0) == 0) {
+            const size_t end = text.find_first_of(": ", 12);
+            exercise = text.substr(12, end == std::string::npos ? std::string::npos : end - 12);
+        } else if (text == "// SOLUTION BEGIN" && !indent.empty() && !exercise.empty()) {
+            out.push_back(indent + "rt::note_stub(\"" + exercise + "\");");
+            exercise.clear();
+        }
+    }
     return join(out);
 }
 
@@ -249,6 +274,8 @@ int main(int argc, char** argv)
     try {
         if (args.size() == 3 && args[0] == "cut")
             write_text(args[2], cut(args[1]));
+        else if (args.size() == 3 && args[0] == "trace")
+            write_text(args[2], trace(args[1]));
         else if (args.size() == 3 && args[0] == "check-cut")
             check_cut(args[1], args[2]);
         else if (args.size() == 4 && args[0] == "mutate")
@@ -256,7 +283,7 @@ int main(int argc, char** argv)
         else if (args.size() == 2 && args[0] == "share")
             share(args[1]);
         else {
-            std::cerr << "usage: kit_tool cut SOLUTION EXERCISE | check-cut SOLUTION EXERCISE | "
+            std::cerr << "usage: kit_tool cut SOLUTION EXERCISE | trace SOLUTION OUT | check-cut SOLUTION EXERCISE | "
                          "mutate MUTANT SOLUTION OUT | share SOLUTION\n";
             return 2;
         }

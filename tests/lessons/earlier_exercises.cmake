@@ -1,0 +1,58 @@
+# A lesson's "Before you start" line names every exercise of an earlier chapter that the chapter's
+# graded cases run, so a student writes them all before the first grade, not one run at a time.
+# The list comes from the solutions traced (kit_tool trace): each exercise notes that it ran, and
+# the grader's results list them per case.
+#   cmake -D NN=07 -D LESSON=<chapters/07_uniform_grid/README.md> -D GRADER=<grade_07_traced>
+#         -D RESULTS=<file> -P earlier_exercises.cmake
+file(REMOVE "${RESULTS}")
+execute_process(COMMAND "${GRADER}" --results "${RESULTS}" OUTPUT_QUIET ERROR_QUIET)
+# The results: a line a case, its fields split by tabs; the sixth lists the exercises that ran.
+file(STRINGS "${RESULTS}" lines)
+list(LENGTH lines cases)
+if(cases EQUAL 0)
+  message(FATAL_ERROR "grade_${NN}_traced graded no case (${RESULTS})")
+endif()
+set(earlier "")
+foreach(line IN LISTS lines)
+  # A regex, not a list: a description may hold brackets or semicolons, which split a list wrongly.
+  if(NOT line MATCHES "^([^\t]*)\t([^\t]*)\t([^\t]*)\t([^\t]*)\t([^\t]*)\t([^\t]*)")
+    continue()
+  endif()
+  string(REPLACE " " ";" ran "${CMAKE_MATCH_6}")
+  foreach(exercise IN LISTS ran)
+    string(SUBSTRING "${exercise}" 0 2 chapter)
+    if(chapter LESS NN)
+      list(APPEND earlier "${exercise}")
+    endif()
+  endforeach()
+endforeach()
+list(REMOVE_DUPLICATES earlier)
+list(SORT earlier COMPARE NATURAL)
+# "01.1, 02.2 and 02.5"
+list(LENGTH earlier count)
+set(words "")
+if(count GREATER 0)
+  math(EXPR last "${count} - 1")
+  list(GET earlier ${last} final)
+  list(REMOVE_AT earlier ${last})
+  string(JOIN ", " words ${earlier})
+  if(words)
+    set(words "${words} and ${final}")
+  else()
+    set(words "${final}")
+  endif()
+endif()
+file(STRINGS "${LESSON}" marked REGEX "<!-- earlier exercises -->")
+set(expected "**Before you start:** this chapter's graded cases also run your ${words}. <!-- earlier exercises -->")
+if(count EQUAL 0)
+  if(marked)
+    message(FATAL_ERROR "${LESSON}: its cases run no earlier exercise, so its line '${marked}' should go")
+  endif()
+  message(STATUS "chapter ${NN}: its ${cases} cases run no earlier exercise")
+  return()
+endif()
+if(NOT marked STREQUAL expected)
+  message(FATAL_ERROR "${LESSON}: its cases run ${words} of the earlier chapters; the line under its title should read\n"
+    "${expected}\nnot\n${marked}")
+endif()
+message(STATUS "chapter ${NN}: its ${cases} cases run ${words}, as its lesson says")
