@@ -4,14 +4,12 @@
 // where its rays do their work.
 //
 // The cost of a pixel is the growth of one of the thread's counters (stats.hpp) while its samples
-// are traced: `with_cost` wraps a render's radiance function, and the render loop (render.hpp)
-// traces every sample of a pixel on one thread, so no two threads touch one pixel's count.
+// are traced: the render loop (render.hpp) keeps it when handed a map.
 #pragma once
 
 #include "common/image.hpp"
 #include "common/stats.hpp"
 
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,26 +24,8 @@ struct CostMap {
     CostMap() = default;
     CostMap(int w, int h, Counter c) : width(w), height(h), counter(c), cost(static_cast<size_t>(w) * h, 0) {}
 
-    // The pixel a sample at (x, y) belongs to (pixel centres at whole numbers, render.hpp).
-    std::uint64_t& at_sample(float x, float y)
-    {
-        const int i = static_cast<int>(std::floor(x + 0.5f));
-        const int j = static_cast<int>(std::floor(y + 0.5f));
-        return cost[static_cast<size_t>(j) * width + i];
-    }
+    std::uint64_t& at(int i, int j) { return cost[static_cast<size_t>(j) * width + i]; }
 };
-
-// `radiance` with each call's cost added to the map at the sample's pixel.
-template <class Radiance>
-auto with_cost(CostMap& map, const Radiance& radiance)
-{
-    return [&map, &radiance](float x, float y, auto& rng) {
-        const std::uint64_t before = counted(local_counts(), map.counter);
-        const auto c = radiance(x, y, rng);
-        map.at_sample(x, y) += counted(local_counts(), map.counter) - before;
-        return c;
-    };
-}
 
 // The map's pixels as colours (viridis: dark blue for nothing, through green, to yellow at `top`
 // and above), and beside them a colour bar labelled from 0 to `top` with `what` beneath: one image

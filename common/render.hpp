@@ -5,6 +5,7 @@
 // threads can change a value.
 #pragma once
 
+#include "common/heatmap.hpp"
 #include "common/image.hpp"
 #include "common/parallel.hpp"
 #include "common/progress.hpp"
@@ -59,8 +60,12 @@ inline PixelSample sample_position(int i, int j, int spp, Rng& rng)
 // With `variance_of_mean`, also the estimated variance of each pixel's mean, s^2 / spp from the
 // spread of its samples (0 at 1 spp): what a noisy picture test needs to know how far a correct
 // render may stray from the converged one (tests/grader/picture.hpp).
+//
+// With `cost`, also what each pixel cost (heatmap.hpp): the growth of the map's counter while the
+// pixel's samples are traced. They are all traced on one thread, so no two threads touch a count.
 template <class Radiance>
-Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_of_mean = nullptr)
+Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_of_mean = nullptr,
+             CostMap* cost = nullptr)
 {
     Image image(s.width, s.height);
     if (variance_of_mean)
@@ -70,6 +75,7 @@ Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_
         const int j = static_cast<int>(row);
         for (int i = 0; i < s.width; ++i) {
             Rng rng = pixel_rng(s.seed, i, j, s.width);
+            const std::uint64_t counted_before = cost ? counted(local_counts(), cost->counter) : 0;
             color sum(0.0f), sum_sq(0.0f);
             for (int k = 0; k < s.spp; ++k) {
                 const PixelSample ps = sample_position(i, j, s.spp, rng);
@@ -77,6 +83,8 @@ Image render(const RenderSettings& s, const Radiance& radiance, Image* variance_
                 sum += c;
                 sum_sq += c * c;
             }
+            if (cost)
+                cost->at(i, j) += counted(local_counts(), cost->counter) - counted_before;
             const float n = static_cast<float>(s.spp);
             image.at(i, j) = sum / n;
             if (variance_of_mean && s.spp > 1) {

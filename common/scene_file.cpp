@@ -38,13 +38,6 @@ Camera nff_camera(const NffView& view, int width, int height)
     return cam;
 }
 
-Ray from_near_plane(const Ray& ray, const Camera& cam, float hither)
-{
-    // The ray climbs dir.(-w) of depth per unit of t; a camera ray always points in front.
-    const float depth_rate = glm::dot(ray.dir, -cam.w);
-    return depth_rate > 0.0f ? Ray{ray.at(hither / depth_rate), ray.dir} : ray;
-}
-
 SceneRender scene_render(NffScene scene, const RenderSettings& settings)
 {
     SceneRender r{std::move(scene), {}, settings};

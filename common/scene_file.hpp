@@ -11,6 +11,8 @@
 #include "common/ray.hpp"
 #include "common/render.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <string>
 
 namespace rt {
@@ -32,7 +34,12 @@ Camera nff_camera(const NffView& view, int width, int height);
 // -w), is seen. The camera's ray, from the eye or from a point of chapter 06's lens (both in the
 // plane through the eye across the view), starts on that plane instead, and every chapter's
 // tracer takes it from there.
-Ray from_near_plane(const Ray& ray, const Camera& cam, float hither);
+inline Ray from_near_plane(const Ray& ray, const Camera& cam, float hither)
+{
+    // The ray climbs dir.(-w) of depth per unit of t; a camera ray always points in front.
+    const float depth_rate = glm::dot(ray.dir, -cam.w);
+    return depth_rate > 0.0f ? Ray{ray.at(hither / depth_rate), ray.dir} : ray;
+}
 
 // A scene file ready to render: the scene, its camera, and the render settings, whose size is the
 // file's resolution unless --width or --height was given; given one, the other keeps the file's

@@ -11,8 +11,7 @@
 // hit_sphere and hit_triangle) and its normals.
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
-#include "04_shadow_feelers/closest_hit.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 
 #include <cmath>
 #include <cstdint>

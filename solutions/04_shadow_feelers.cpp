@@ -18,8 +18,7 @@
 // STUB // hit_sphere and hit_triangle) and its normals.
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 // STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
-#include "04_shadow_feelers/closest_hit.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -18,7 +18,7 @@
 // STUB // shadow feeler (light_blocked, which calls your 04.2 and 04.3).
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
 // STUB #include "common/stub.hpp"  // stub("NN.k", value) lets the program name unfinished exercises
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "05_soft_shadows/05_soft_shadows.hpp"
 #include "05_soft_shadows/light_samples.hpp"
 

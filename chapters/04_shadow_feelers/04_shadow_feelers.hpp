@@ -6,9 +6,9 @@
 // README.md beside this file. Each contract says what its function returns, what the grader holds it
 // to and where the lesson derives it; the lesson and the hints (hints.md) say how.
 //
-// Given code you call from your answers: hit_sphere and hit_triangle with lit_tests, and
-// hit_cone_counted (closest_hit.hpp: they count each intersection test) in 04.2, and
-// light_blocked (feeler.hpp: one counted shadow feeler, sent the way the settings say) in 04.4.
+// Given code you call from your answers: hit_sphere and hit_triangle with lit_tests (radiance.hpp),
+// and hit_cone_counted (chapter 02's shape_tests.hpp: they count each intersection test) in 04.2,
+// and light_blocked (radiance.hpp: one counted shadow feeler, sent the way the settings say) in 04.4.
 #pragma once
 
 #include "04_shadow_feelers/feeler_settings.hpp"
@@ -76,7 +76,7 @@ constexpr float shadow_epsilon = 1e-4f;
 // The feeler is the ray from `origin` along the unit vector toward the light, and it looks only at
 // t strictly between `t_min` and the light's distance times (1 - shadow_epsilon). Test the spheres
 // with hit_sphere, the triangles with hit_triangle (both with lit_tests) and the cones with
-// hit_cone_counted (closest_hit.hpp), over that open range, and return true at the first hit.
+// hit_cone_counted (shape_tests.hpp), over that open range, and return true at the first hit.
 // Return false when none hits.
 // DETAIL END
 bool occluded(const LitScene& scene, const point3& origin, const point3& light, float t_min);

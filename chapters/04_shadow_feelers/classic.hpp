@@ -27,7 +27,7 @@
 #include "01_ray_casting/01_ray_casting.hpp"
 #include "03_reflection_refraction/03_reflection_refraction.hpp"
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "04_shadow_feelers/nff_scene.hpp"
 #include "common/error.hpp"
 #include "common/heatmap.hpp"
@@ -133,7 +133,7 @@ inline Image render_classic(const SceneRender& file, const ClassicScene& scene, 
         count(Counter::primary_rays);
         return trace(scene, file.eye_ray(primary_ray(file.camera, x - 0.5f, y - 0.5f)), 1);
     };
-    const Image corners = corner_cost ? render(grid, with_cost(*corner_cost, corner)) : render(grid, corner);
+    const Image corners = render(grid, corner, nullptr, corner_cost);
     Image image(settings.width, settings.height);
     for (int j = 0; j < settings.height; ++j)
         for (int i = 0; i < settings.width; ++i)

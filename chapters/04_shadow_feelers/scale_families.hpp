@@ -13,7 +13,7 @@
 #pragma once
 
 #include "01_ray_casting/01_ray_casting.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "common/camera.hpp"
 #include "common/error.hpp"
 #include "common/float_reach.hpp"

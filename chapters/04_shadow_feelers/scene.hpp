@@ -51,7 +51,7 @@ struct LitScene {
     color ambient{0.0f};     // light arriving from everywhere, with no direction and no shadow
     color background{0.0f};  // the slides' backgroundColour, for rays that hit nothing
 
-    // What answers the scene's queries (closest_hit.hpp, and feeler.hpp's shadow feelers): none,
+    // What answers the scene's queries (radiance.hpp's closest hit and shadow feelers): none,
     // brute force, in chapters 04-06; from chapter 07 on, the program's grid or hierarchy, built
     // over these arrays (it does not own them, nor they it).
     const Accelerator* accelerator = nullptr;

@@ -10,7 +10,7 @@
 // the occluder 0.25 S above the surface. Beside them, the case where Wachter and Binder's offset
 // meets its limit: a floor through y = 0, a square 20 S across centred on the origin, under a plane
 // at y = S/4. Hit points come from rays shot at the surface from 3 S away (or farther), with their
-// points computed from the surface (closest_hit.hpp) or, to show why, from ray.at(t); from each,
+// points computed from the surface (radiance.hpp) or, to show why, from ray.at(t); from each,
 // one feeler leaves on the front side (toward a light outside) or on the back side (into the
 // object, as a refracted ray would), in a direction uniform over that hemisphere, grazing ones
 // included.
@@ -20,7 +20,7 @@
 
 #include "01_ray_casting/01_ray_casting.hpp"
 #include "02_spheres_triangles/extremes.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 
 #include <array>
 #include <cassert>

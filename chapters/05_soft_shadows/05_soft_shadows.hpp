@@ -9,7 +9,7 @@
 // Given code you call from your answers (light_samples.hpp): light_sample, the k-th point of the
 // unit square by the scheme LightSampling names (it calls your 05.3), and point_on_light, that
 // point on a light of either shape (it calls your 05.1 or 05.2). From chapter 04: local_shading
-// (04.1) and light_blocked (feeler.hpp: one counted shadow feeler).
+// (04.1) and light_blocked (radiance.hpp: one counted shadow feeler).
 #pragma once
 
 #include "05_soft_shadows/area_light.hpp"

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
-#include "04_shadow_feelers/closest_hit.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "05_soft_shadows/05_soft_shadows.hpp"
 #include "common/stats.hpp"
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
-#include "04_shadow_feelers/closest_hit.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "06_depth_of_field/06_depth_of_field.hpp"
 #include "06_depth_of_field/scene.hpp"
 #include "common/render.hpp"

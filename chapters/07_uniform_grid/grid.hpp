@@ -34,7 +34,7 @@ namespace rt {
 // point p and the coordinates of p and of the box: a t measures |p - o|, never the scene's size.
 //  - the sphere test (02.2) works in double and rounds t to float once: 1 float step of t, 2u |p - o|;
 //  - the watertight test (02.5) gives t as a weighted mean of the corners' heights along the ray,
-//    each carrying a few roundings (watertight_error.hpp, after pbrt sec. 3.9.6): about 9u of the
+//    each carrying a few roundings (shape_tests.hpp, after pbrt sec. 3.9.6): about 9u of the
 //    corners' distance from o, at most |p - o| plus the triangle's own size;
 //  - the slab test's near t, (plane - o) / d, three roundings: 3u |p - o| (its far t is widened
 //    already: Ize, "Robust BVH Ray Traversal", 2013, bounds.hpp);

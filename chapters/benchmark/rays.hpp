@@ -5,7 +5,7 @@
 #pragma once
 
 #include "04_shadow_feelers/04_shadow_feelers.hpp"
-#include "04_shadow_feelers/closest_hit.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "02_spheres_triangles/extremes.hpp"
 #include "common/random.hpp"
 #include "common/scene_file.hpp"

@@ -2,7 +2,7 @@
 // went in, what was expected and what came back.
 #pragma once
 
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "04_shadow_feelers/self_intersection.hpp"
 #include "tests/grader/graded.hpp"
 

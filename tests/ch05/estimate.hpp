@@ -8,7 +8,7 @@
 // make a false failure about one in a million (and the seeded streams make every run the same).
 #pragma once
 
-#include "04_shadow_feelers/closest_hit.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "tests/ch05/describe.hpp"
 #include "tests/ch05/exact_irradiance.hpp"
 

@@ -1,10 +1,10 @@
-// The watertight test's own bound on t (chapter 02's watertight_error.hpp), where it is needed most:
+// The watertight test's own bound on t (chapter 02's shape_tests.hpp), where it is needed most:
 // a ray leaving the plane of a nearly collinear triangle. The true t is then exactly 0, so every t
 // the watertight test (EXERCISE 02.5) reports is all rounding and must lie within the bound, or
 // chapter 04's bounded test lets the ray find its own surface again, at a point outside the
 // triangle's box where no structure of chapters 07-10 looks for it.
 #include "02_spheres_triangles/02_spheres_triangles.hpp"
-#include "02_spheres_triangles/watertight_error.hpp"
+#include "02_spheres_triangles/shape_tests.hpp"
 #include "common/random.hpp"
 #include "tests/grader/graded.hpp"
 

@@ -3,8 +3,7 @@
 // light, and meshes far finer than their distance from the origin. Each case asks the given query
 // of chapter 04 (closest_hit, the feelers) and the reader, never a structure: the structures are
 // held to brute force elsewhere (legal_scenes_test.cpp).
-#include "04_shadow_feelers/closest_hit.hpp"
-#include "04_shadow_feelers/feeler.hpp"
+#include "04_shadow_feelers/radiance.hpp"
 #include "common/random.hpp"
 #include "tests/grader/graded.hpp"
 

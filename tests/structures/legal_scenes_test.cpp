@@ -264,7 +264,7 @@ TEST_CASE("a floor 2e7 across is drawn from 1 to 1e6 above it, by brute force an
 {
     // Once: seen from 1 above, chapter 04 on drew nothing of it. The float test's bound on t grows
     // with the corners' distance from the eye (1e7), and refused every hit nearer than it, however
-    // certainly in front; now double decides there (watertight_error.hpp).
+    // certainly in front; now double decides there (shape_tests.hpp).
     const Triangle tri{{-1e7f, 0, 1e7f}, {1e7f, 0, 1e7f}, {0, 0, -1e7f}};
     LitScene floor = with_material();
     floor.add_triangle(tri, 0);
