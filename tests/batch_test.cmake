@@ -6,15 +6,15 @@
 # junit.xml and the class page; the class page's exercise table and exercises.csv must give each
 # exercise's numbers as the three students' results make them; and a second batch in the same
 # build folder grades the files as they are now.
-#   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P batch_test.cmake
+#   cmake -D KIT=<the kit> -D WORK=<a scratch folder> -P batch_test.cmake
 file(REMOVE_RECURSE "${WORK}/class")
 set(class "${WORK}/class")
 file(MAKE_DIRECTORY "${class}/alice" "${class}/bob" "${class}/carol")
-file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/solutions/02_spheres_triangles.cpp"
+file(COPY "${KIT}/solutions/01_ray_casting.cpp" "${KIT}/solutions/02_spheres_triangles.cpp"
   DESTINATION "${class}/alice")
 # bob's chapter 01: the solution with the kept mutant 01_hit_behind_eye applied (its --- lines
 # replaced by its +++ lines), so some of his cases fail on his own code.
-file(READ "${SOURCE_DIR}/tests/mutants/01_hit_behind_eye.mutant" mutant)
+file(READ "${KIT}/tests/mutants/01_hit_behind_eye.mutant" mutant)
 string(FIND "${mutant}" "\n---\n" from)
 string(FIND "${mutant}" "\n+++\n" to)
 math(EXPR from "${from} + 5")
@@ -23,18 +23,18 @@ string(SUBSTRING "${mutant}" ${from} ${length} mistaken)
 math(EXPR to "${to} + 5")
 string(SUBSTRING "${mutant}" ${to} -1 mistake)
 string(REGEX REPLACE "\n$" "" mistake "${mistake}")
-file(READ "${SOURCE_DIR}/solutions/01_ray_casting.cpp" text)
+file(READ "${KIT}/solutions/01_ray_casting.cpp" text)
 string(REPLACE "${mistaken}" "${mistake}" bob_text "${text}")
 if(bob_text STREQUAL text)
   message(FATAL_ERROR "01_hit_behind_eye.mutant's lines are not in solutions/01_ray_casting.cpp")
 endif()
 file(WRITE "${class}/bob/01_ray_casting.cpp" "${bob_text}")
-file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
-file(READ "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp" text)
+file(COPY "${KIT}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
+file(READ "${KIT}/exercises/02_spheres_triangles.cpp" text)
 file(WRITE "${class}/carol/02_spheres_triangles.cpp" "${text}\nint carol_forgot_the_semicolon = 1\n")
 
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${class}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
-    -P "${SOURCE_DIR}/tests/grade_batch.cmake"
+    -P "${KIT}/tests/grade_batch.cmake"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 function(fail why)
   message(FATAL_ERROR "${why}\n--- the batch said:\n${out}")
@@ -260,7 +260,7 @@ message(STATUS "a class of three: ${out}")
 # A student's grader run after an edit rebuilds itself first: the build folder now grades carol's
 # files (the last graded); her chapter 01, the untouched stubs, becomes the solution, and grading
 # 01.2 alone must rebuild and score it in full, not grade the stale program.
-file(READ "${SOURCE_DIR}/solutions/01_ray_casting.cpp" solution)
+file(READ "${KIT}/solutions/01_ray_casting.cpp" solution)
 file(WRITE "${class}/carol/01_ray_casting.cpp" "${solution}")
 file(GLOB grader LIST_DIRECTORIES false "${WORK}/build/tests/grade_01" "${WORK}/build/tests/*/grade_01.exe" "${WORK}/build/tests/grade_01.exe")
 execute_process(COMMAND ${grader} "[01.2]" RESULT_VARIABLE rc OUTPUT_VARIABLE regrade ERROR_VARIABLE regrade)
@@ -279,9 +279,9 @@ endif()
 # Carol alone this time, in the same folder (the others would only rebuild to the same grades).
 file(REMOVE_RECURSE "${class}/alice" "${class}/bob")
 file(REMOVE "${class}/carol/01_ray_casting.cpp")
-file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
+file(COPY "${KIT}/exercises/01_ray_casting.cpp" DESTINATION "${class}/carol")
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${class}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
-    -P "${SOURCE_DIR}/tests/grade_batch.cmake"
+    -P "${KIT}/tests/grade_batch.cmake"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 file(READ "${WORK}/build/students/carol/results.json" json)
 if(NOT rc EQUAL 0 OR NOT json MATCHES "chapter 01 is still the handed-out stubs")
@@ -297,17 +297,17 @@ set(clones "${WORK}/clones")
 file(REMOVE_RECURSE "${clones}")
 foreach(student dave erin frank)
   file(MAKE_DIRECTORY "${clones}/${student}/exercises" "${clones}/${student}/.github/classroom/stubs")
-  file(COPY "${SOURCE_DIR}/README.md" DESTINATION "${clones}/${student}")
-  file(COPY "${SOURCE_DIR}/exercises/01_ray_casting.cpp" "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp"
+  file(COPY "${KIT}/README.md" DESTINATION "${clones}/${student}")
+  file(COPY "${KIT}/exercises/01_ray_casting.cpp" "${KIT}/exercises/02_spheres_triangles.cpp"
     DESTINATION "${clones}/${student}/.github/classroom/stubs")
 endforeach()
-file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/solutions/02_spheres_triangles.cpp"
+file(COPY "${KIT}/solutions/01_ray_casting.cpp" "${KIT}/solutions/02_spheres_triangles.cpp"
   DESTINATION "${clones}/dave/exercises")
-file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" "${SOURCE_DIR}/exercises/02_spheres_triangles.cpp"
+file(COPY "${KIT}/solutions/01_ray_casting.cpp" "${KIT}/exercises/02_spheres_triangles.cpp"
   DESTINATION "${clones}/erin/exercises")
-file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${clones}/frank/exercises")
+file(COPY "${KIT}/solutions/01_ray_casting.cpp" DESTINATION "${clones}/frank/exercises")
 execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${clones}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
-    -P "${SOURCE_DIR}/tests/grade_batch.cmake"
+    -P "${KIT}/tests/grade_batch.cmake"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
 if(NOT rc EQUAL 0)
   fail("the batch of clones exited with ${rc}")

@@ -233,19 +233,15 @@ LessonTable feeler_tests_by_outcome(const Options& o)
             const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
             if (!hit)
                 continue;
-            const vec3 n = glm::dot(hit->n, ray.dir) > 0.0f ? -hit->n : hit->n;
-            for (const PointLight& light : scene.lights) {
-                if (glm::dot(n, light.position - hit->p) <= 0.0f)
-                    continue;  // shade sends no feeler toward a light behind the surface
-                const RayStart start = ray_start(hit->p, hit->ng, light.position - hit->p, Offset::robust);
+            for_each_feeler(scene, ray, *hit, [&](const point3& light, const point3& origin) {
                 bool is_blocked = false;
                 std::uint64_t used[2];
                 double seconds[2];
                 for (int q = 0; q < 2; ++q) {
                     const std::uint64_t before = tests();
                     const Timer timer;
-                    const bool b = q == 0 ? occluded(scene, start.origin, light.position, start.t_min)
-                                          : occluded_by_closest_hit(scene, start.origin, light.position, start.t_min);
+                    const bool b = q == 0 ? occluded(scene, origin, light, 0.0f)
+                                          : occluded_by_closest_hit(scene, origin, light, 0.0f);
                     seconds[q] = timer.seconds();
                     used[q] = tests() - before;
                     is_blocked = is_blocked || b;
@@ -257,7 +253,7 @@ LessonTable feeler_tests_by_outcome(const Options& o)
                         t->seconds[q] += seconds[q];
                     }
                 }
-            }
+            });
         }
     LessonTable lesson{"04.per_feeler",
                        {{"feelers"}, {"share"}, {"any-hit tests"}, {"closest-hit tests"}, {"any-hit ns", true},

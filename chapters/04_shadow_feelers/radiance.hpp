@@ -169,4 +169,16 @@ inline bool light_blocked(const LitScene& scene, const Hit& hit, const point3& l
                              : occluded(scene, start.origin, light, start.t_min);
 }
 
+// The feelers your shade sends from the hit of `ray` (EXERCISE 04.4): one toward each light on the
+// side the eye sees, from the robust offset (04.3); visit(light, origin) for each. For programs that
+// replay shade's feelers to measure them (chapter 04's per-feeler table, chapter 08's ray sets).
+template <class Visit>
+void for_each_feeler(const LitScene& scene, const Ray& ray, const Hit& hit, const Visit& visit)
+{
+    const vec3 n = glm::dot(hit.n, ray.dir) > 0.0f ? -hit.n : hit.n;
+    for (const PointLight& light : scene.lights)
+        if (glm::dot(n, light.position - hit.p) > 0.0f)
+            visit(light.position, offset_ray_origin(hit.p, hit.ng, light.position - hit.p));
+}
+
 }  // namespace rt

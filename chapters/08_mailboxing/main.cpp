@@ -65,14 +65,12 @@ std::vector<RaySet> ray_sets(const SceneRender& file, const LitScene& scene)
             const std::optional<Hit> hit = closest_hit(ray, scene, Interval{0.0f, infinity});
             if (!hit)
                 continue;
-            const vec3 n = glm::dot(hit->n, ray.dir) > 0.0f ? -hit->n : hit->n;
-            for (const PointLight& light : scene.lights) {
-                if (glm::dot(n, light.position - hit->p) <= 0.0f)
-                    continue;
-                const Feeler f = feeler(offset_ray_origin(hit->p, hit->ng, light.position - hit->p), light.position, 0.0f);
+            for_each_feeler(scene, ray, *hit, [&](const point3& light, const point3& origin) {
+                const Feeler f = feeler(origin, light, 0.0f);
                 shadow.rays.push_back(f.ray);
                 shadow.ranges.push_back(f.range);
-            }
+            });
+            const vec3 n = glm::dot(hit->n, ray.dir) > 0.0f ? -hit->n : hit->n;
             const vec3 r = reflect(ray.dir, n);
             secondary.rays.push_back({offset_ray_origin(hit->p, hit->ng, r), r});
             secondary.ranges.push_back({0.0f, infinity});

@@ -5,17 +5,17 @@
 # autograder/submission, then run_autograder, as Gradescope runs them: no setting of their own. The
 # submission must compile only its own file, and results.json must hold chapter 01's cases alone,
 # at full points. A package asked for a chapter the kit does not have is not written.
-#   cmake -D SOURCE_DIR=<the kit> -D WORK=<a scratch folder> -P package_test.cmake
+#   cmake -D KIT=<the kit> -D WORK=<a scratch folder> -P package_test.cmake
 file(REMOVE_RECURSE "${WORK}/autograder")
 foreach(bad "11" "1;2" "01,02")
-  execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}/bad" "-DCHAPTERS=${bad}"
-    -P "${SOURCE_DIR}/tests/gradescope/package.cmake" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${KIT}" -D "OUT=${WORK}/bad" "-DCHAPTERS=${bad}"
+    -P "${KIT}/tests/gradescope/package.cmake" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(rc EQUAL 0 OR NOT out MATCHES "gradescope package: CHAPTERS")
     message(FATAL_ERROR "a package for CHAPTERS=${bad} should not be written, and say why (${rc}):\n${out}")
   endif()
 endforeach()
-execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${SOURCE_DIR}" -D "OUT=${WORK}" -D CHAPTERS=01
-  -P "${SOURCE_DIR}/tests/gradescope/package.cmake" RESULT_VARIABLE rc)
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${KIT}" -D "OUT=${WORK}" -D CHAPTERS=01
+  -P "${KIT}/tests/gradescope/package.cmake" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the package was not written")
 endif()
@@ -38,7 +38,7 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "the kit was built in")
 endif()
 file(STRINGS "${root}/work/build/.ninja_log" built)
 list(LENGTH built setup_log_lines)
-file(COPY "${SOURCE_DIR}/solutions/01_ray_casting.cpp" DESTINATION "${root}/submission/my_work")
+file(COPY "${KIT}/solutions/01_ray_casting.cpp" DESTINATION "${root}/submission/my_work")
 execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=RT_GRADE_CHAPTERS "AUTOGRADER_ROOT=${root}"
     bash "${root}/source/run_autograder"
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
