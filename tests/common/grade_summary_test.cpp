@@ -65,6 +65,19 @@ TEST_CASE("a chapter whose every case ran a stub is one line worth all of its po
     CHECK(rt::grader::chapter_marks(summary)[0].marks == "untouched");
 }
 
+TEST_CASE("a lettered case waiting for a stub says what it is: A the whole structure, P the figure", "[grader]")
+{
+    const std::vector<CaseResult> cases = {graded("07.1", 2, true), graded("07.A", 4, false, "07.3"),
+                                           graded("07.P", 3, false, "07.3 07.4")};
+    const auto summary = rt::grader::summarize(cases);
+    INFO(show(summary));
+    REQUIRE(summary.size() == 3);
+    CHECK(summary[1].name == "07.A (your whole structure against brute force) cannot be graded yet: it runs 07.3, "
+                             "which is still the handed-out stub");
+    CHECK(summary[2].name == "07.P (the chapter's figure against the reference) cannot be graded yet: it runs 07.3 "
+                             "and 07.4, which are still the handed-out stubs");
+}
+
 TEST_CASE("a chapter that did not compile is one line with the compiler's errors, worth all its cases", "[grader]")
 {
     CaseResult build = graded("02.build", 0, false, "", "02_spheres_triangles.cpp:3:1: error: expected ';'");

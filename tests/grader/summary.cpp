@@ -37,6 +37,17 @@ std::string grep_hint(const std::string& exercise)
     return "grep -n \"EXERCISE " + exercise + "\" exercises/*.cpp";
 }
 
+// A case numbered by a letter is no exercise of the student's file, so its line says what it is
+// (the lessons' points tables say it at length).
+std::string case_in_words(const std::string& number)
+{
+    if (number.size() == 4 && number[3] == 'A')
+        return number + " (your whole structure against brute force)";
+    if (number.size() == 4 && number[3] == 'P')
+        return number + " (the chapter's figure against the reference)";
+    return number;
+}
+
 const std::string untouched_words = " is still the handed-out stubs";
 const std::string stub_words = " is still the handed-out stub";
 
@@ -49,7 +60,7 @@ std::string stub_verdict(const CaseResult& r)
     if (ran_stub(r, r.number))
         return r.number + stub_words;
     const bool several = r.stubs.find(' ') != std::string::npos;
-    return r.number + " cannot be graded yet: it runs " + in_words(r.stubs) + (several ? ", which are" : ", which is") +
+    return case_in_words(r.number) + " cannot be graded yet: it runs " + in_words(r.stubs) + (several ? ", which are" : ", which is") +
            stub_words.substr(3) + (several ? "s" : "");
 }
 
