@@ -112,6 +112,8 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
         GridWalk walk = start_walk(shape_, ray, range);
         if (walk.missed)
             return false;
@@ -125,6 +127,8 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().any(ray, range, objects);
         GridWalk walk = start_walk(shape_, ray, range);
         if (walk.missed)
             return false;
@@ -207,12 +211,13 @@ private:
     {
         const Timer timer;
         const Bounds scene = bounds_of_all(objects);
-        const GridPlan plan = plan_shape(objects, scene, lambda);
+        margins_ = margins_of(objects);
+        const GridPlan plan = plan_shape(objects, scene, margins_, lambda);
         shape_ = plan.shape;
         // The bits first: they count the occupied cells, so that what the build will hold is known
         // before any of its large arrays is allocated.
         const long long occupied = set_bits(shape_, plan.ranges, bits_);
-        const std::size_t dense = weigh_memory(objects, scene, plan, occupied, lambda, table_size);
+        const std::size_t dense = weigh_memory(objects, scene, margins_, plan, occupied, lambda, table_size);
         const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references, occupied);
         const long long collisions = file_by_bucket(by_address, table_size_for(table_size, occupied));
 
@@ -237,7 +242,7 @@ private:
     // The grid's shape and each object's cells, lambda cells per object up to
     // max_hashed_cells_per_axis: chapter 07's plan, whose references are counted before anything is
     // allocated, and which lowers lambda where such a grid would not pay (grid_pays).
-    static GridPlan plan_shape(const Objects& objects, const Bounds& scene, float lambda)
+    static GridPlan plan_shape(const Objects& objects, const Bounds& scene, const Margins& margins, float lambda)
     {
         const int count = objects.size();
         const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
@@ -245,7 +250,7 @@ private:
             throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
                              std::to_string(asked.z) +
                              " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
-        return plan_over_all(objects, scene, lambda, max_hashed_cells_per_axis, "the hashed grid");
+        return plan_over_all(objects, scene, margins, lambda, max_hashed_cells_per_axis, "the hashed grid");
     }
 
     // The table's size: the one asked for, or, for 0, the least prime at least twice the occupied cells.
@@ -267,8 +272,8 @@ private:
     // plans stay under the floor and within the factor (a pass over the objects and their cells for
     // each). The build goes on at the lambda asked for: memory is the user's to trade for speed
     // (finer cells test fewer objects), and nothing is answered wrong. Returns the dense grid's bytes.
-    static std::size_t weigh_memory(const Objects& objects, const Bounds& scene, const GridPlan& plan,
-                                    long long occupied, float asked, std::uint32_t table_size)
+    static std::size_t weigh_memory(const Objects& objects, const Bounds& scene, const Margins& margins,
+                                    const GridPlan& plan, long long occupied, float asked, std::uint32_t table_size)
     {
         const int count = objects.size();
         const auto peak_of = [&](const GridPlan& p, long long occ) {
@@ -277,7 +282,6 @@ private:
                                       table_size_for(table_size, occ));
         };
         const std::size_t peak = peak_of(plan, occupied);
-        const Margins margins = margins_of(scene);
         std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
         std::iota(all.begin(), all.end(), 0u);
         const GridPlan dense_plan = plan_grid(scene, objects, all, dense_grid_lambda, margins, max_cells_per_axis);
@@ -432,6 +436,7 @@ private:
         return occupied;
     }
 
+    Margins margins_;
     GridShape shape_;
     HashTable table_;
     OccupancyBits bits_;
