@@ -53,10 +53,11 @@ namespace rt {
 // objects, and no cell or node could sort them apart.
 constexpr float margin_roundings = 0x1p-20f;  // 16 u
 
-// Why 1 in 100: the reach is built around the box of the scene's bulk, its objects but the farthest
-// 1% on each side of each axis, so that a few far objects (a sphere 1e4 away, a huge floor) do not
-// decide it. A scene of fewer than 100 objects keeps them all.
-constexpr int reach_outliers_per_hundred = 1;
+// Why 8: the reach is built around the box of the scene's bulk, its objects but the 8 farthest on each
+// side of each axis (or 1 in 100 of them, when that is fewer), so that a few far objects (a sphere 1e4
+// away, a huge floor) do not decide it. A part of the scene made of many objects (a stadium around a
+// teapot, where the eye stands) stays in the bulk: rays start there.
+constexpr int reach_outliers = 8;
 
 // Why 4 widths: rays start on the scene's surfaces, inside the bulk's box, or at an eye that frames
 // the bulk; a view of the bulk at a field of view of 15 degrees or more stands within 4 of its widths.
@@ -210,22 +211,20 @@ struct Margins {
     }
 };
 
-// The box of the scene's bulk: on each axis from the (q + 1)-th least of the objects' box minima to
-// the (q + 1)-th greatest of their maxima, q = reach_outliers_per_hundred in 100 of them (empty for
-// no object).
-inline Bounds bulk_of(const Objects& objects)
+// The box of the scene's bulk, from its objects' boxes: on each axis from the (q + 1)-th least of
+// their minima to the (q + 1)-th greatest of their maxima, q the lesser of reach_outliers and 1 in 100
+// of them (empty for none).
+inline Bounds bulk_of(const std::vector<Bounds>& boxes)
 {
-    const int n = objects.size();
     Bounds bulk;
-    if (n == 0)
+    if (boxes.empty())
         return bulk;
-    const auto q = static_cast<std::size_t>(n / 100 * reach_outliers_per_hundred);
-    std::vector<float> low(static_cast<std::size_t>(n)), high(static_cast<std::size_t>(n));
+    const std::size_t q = std::min(boxes.size() / 100, static_cast<std::size_t>(reach_outliers));
+    std::vector<float> low(boxes.size()), high(boxes.size());
     for (int a = 0; a < 3; ++a) {
-        for (int k = 0; k < n; ++k) {
-            const Bounds b = objects.bounds(k);
-            low[static_cast<std::size_t>(k)] = b.min[a];
-            high[static_cast<std::size_t>(k)] = -b.max[a];
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+            low[k] = boxes[k].min[a];
+            high[k] = -boxes[k].max[a];
         }
         std::nth_element(low.begin(), low.begin() + static_cast<std::ptrdiff_t>(q), low.end());
         std::nth_element(high.begin(), high.begin() + static_cast<std::ptrdiff_t>(q), high.end());
@@ -245,12 +244,15 @@ inline Bounds reach_around(const Bounds& b)
 // The margins of `objects`' structures: the reach around their bulk, the wide box around them all.
 inline Margins margins_of(const Objects& objects)
 {
-    const Bounds bulk = bulk_of(objects);
+    std::vector<Bounds> boxes(static_cast<std::size_t>(objects.size()));
+    Bounds all;
+    for (int k = 0; k < objects.size(); ++k) {
+        boxes[static_cast<std::size_t>(k)] = objects.bounds(k);
+        all.grow(boxes[static_cast<std::size_t>(k)]);
+    }
+    const Bounds bulk = bulk_of(boxes);
     if (bulk.empty())
         return {Bounds{point3(0.0f), point3(0.0f)}, Bounds{point3(0.0f), point3(0.0f)}};
-    Bounds all;
-    for (int k = 0; k < objects.size(); ++k)
-        all.grow(objects.bounds(k));
     return {reach_around(bulk), reach_around(all)};
 }
 

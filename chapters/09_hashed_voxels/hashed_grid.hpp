@@ -70,6 +70,15 @@ constexpr float dense_grid_lambda = 4.0f;
 // apart, and the memory grows with lambda.
 constexpr double hashed_memory_factor = 8.0;
 
+// Why half: the table stores an occupied cell at about three times a dense cell's cost (its 12 bytes
+// and two bucket words, against two offsets) and skips an empty one by a bit; it is for grids whose
+// cells are mostly empty. Where at least half the cells hold something, the cells are finer than
+// the objects (a flat scene's one layer: every cell holds part of a triangle), a finer grid slices
+// them rather than sorts them apart, and every cell it adds is one more the table holds. Such a
+// scene is built at chapter 07's lambda (dense_grid_lambda): the table then holds no more cells
+// than the dense grid, the occupied cells it was asked to hold sized from what it will hold.
+constexpr double hashed_most_occupied = 0.5;
+
 // Why 64 MB: below it a build's memory concerns no machine the kit runs on, whatever the ratio
 // (chapter 07's dense grid alone may take 128 MB of offsets, max_grid_cells). As below
 // grid_pays_floor tests a ray, a scene of a few thousand objects keeps the lambda it asks for
@@ -212,11 +221,19 @@ private:
         const Timer timer;
         const Bounds scene = bounds_of_all(objects);
         margins_ = margins_of(objects);
-        const GridPlan plan = plan_shape(objects, scene, margins_, lambda);
+        GridPlan plan = plan_shape(objects, scene, margins_, lambda);
         shape_ = plan.shape;
         // The bits first: they count the occupied cells, so that what the build will hold is known
         // before any of its large arrays is allocated.
-        const long long occupied = set_bits(shape_, plan.ranges, bits_);
+        long long occupied = set_bits(shape_, plan.ranges, bits_);
+        if (static_cast<double>(occupied) > hashed_most_occupied * static_cast<double>(cells_of(shape_)) &&
+            plan.lambda > dense_grid_lambda) {
+            GridPlan dense_cells = plan_shape(objects, scene, margins_, dense_grid_lambda);
+            say_mostly_occupied(plan, occupied, dense_cells.lambda);
+            plan = std::move(dense_cells);
+            shape_ = plan.shape;
+            occupied = set_bits(shape_, plan.ranges, bits_);
+        }
         const std::size_t dense = weigh_memory(objects, scene, margins_, plan, occupied, lambda, table_size);
         const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references, occupied);
         const long long collisions = file_by_bucket(by_address, table_size_for(table_size, occupied));
@@ -257,6 +274,27 @@ private:
     static std::uint32_t table_size_for(std::uint32_t table_size, long long occupied)
     {
         return table_size > 0 ? table_size : prime_at_least(2 * static_cast<std::uint64_t>(std::max(1LL, occupied)));
+    }
+
+    static long long cells_of(const GridShape& shape)
+    {
+        return static_cast<long long>(shape.n.x) * shape.n.y * shape.n.z;
+    }
+
+    // The notice of a grid whose cells would be mostly occupied (hashed_most_occupied), built at
+    // chapter 07's lambda instead.
+    static void say_mostly_occupied(const GridPlan& plan, long long occupied, float built)
+    {
+        const cell3 n = plan.shape.n;
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "the hashed grid: at lambda %g (%d x %d x %d cells) %.0f%% of its cells would hold objects: "
+                      "they are finer than the objects (a flat scene fills its one layer), and finer cells would "
+                      "slice them rather than sort them apart; built at lambda %g, chapter 07's, instead",
+                      static_cast<double>(plan.lambda), n.x, n.y, n.z,
+                      100.0 * static_cast<double>(occupied) / static_cast<double>(cells_of(plan.shape)),
+                      static_cast<double>(built));
+        notice(line);
     }
 
     // A lambda the notice offers instead, and what its build would hold (0: none found).
