@@ -42,15 +42,17 @@ namespace rt {
 //  - the box itself (its corners rounded from a centre and radius, then grown), the walk's first
 //    point o + t d and a grid's cell numbers ((p - min) / s): a few u of the coordinates, |p| and
 //    |o| (the grid's own part, u of its extent, is grid_rounding's).
-// So the margin is 16 of those roundings, 2^-20 (|p| + D), with |p| the object's own largest
-// coordinate magnitude and D the farthest a covered ray's origin lies from the object's points on
-// any axis: the width of the box around the object and the margins' reach (below). Rays that start
-// outside the reach are not covered, whatever the margin: the structures answer them with brute force
-// (Margins::covers), so nothing is assumed about where an eye stands (an eye 1e6 times the scene's
-// size away makes t's rounding half the scene: sorting objects apart along such a ray sorts nothing).
-// Why not the scene's box for D: one far object (a sphere 1e4 away from a cluster 0.01 across, a
-// floor 1e6 across under it) would then widen every margin near the origin past the cluster's
-// objects, and no cell or node could sort them apart.
+// Together about 16 of them, so the margin is 2^-20 (|p| + D): |p| the object's own largest coordinate
+// magnitude, D the farthest a covered ray's origin lies from the object's points on any axis (which
+// bounds |p - o|, and |o| by |p| + D). D is the width of the box around the object and the rays'
+// reach (Margins, below): the bulk of the scene and 4 of its widths around it, where surfaces and an
+// eye that frames the scene lie. Where the origin lies outside the reach, no margin is promised: such
+// a ray gets brute force's answer (Margins::covers), unless it passes the reach farther off than its
+// hits there could round. An eye 1e6 times the scene's size away rounds a hit's t by a good part of
+// the scene, and sorting objects apart along its rays sorts nothing. Why not the scene's box for D,
+// as once: one far object (a sphere 1e4 away from a cluster 0.01 across, a floor 1e6 across under it)
+// then widens every margin near the origin past the cluster's objects, and no cell or node can sort
+// them apart; and an eye outside that box was covered only by the slack in the 16.
 constexpr float margin_roundings = 0x1p-20f;  // 16 u
 
 // Why 8: the reach is built around the box of the scene's bulk, its objects but the 8 farthest on each
