@@ -284,6 +284,33 @@ inline long long object_cell_ranges(const GridShape& shape, const Objects& objec
     return references;
 }
 
+// The resolution `n` (07.1's for `box`, count objects, lambda) with the cells an axis held at
+// max_per_axis could not take spread over the other axes: the cube-root rule gives every axis cells of
+// one side s, and an axis far longer than the others (a sphere 1e4 away from a cluster 0.01 across)
+// reaches the limit with cells far wider than s, leaving the others a few cells each: the cluster
+// then lies in a few cells, and a ray through it tests more than brute force. The other axes get the
+// rule's answer for the box without the held axes, lambda / (their cells) per object, so the grid
+// still holds about lambda count cells, and no more than it holds already at 2^31 (an int address).
+inline cell3 spread_past_limit(const Bounds& box, cell3 n, int count, float lambda, int max_per_axis)
+{
+    Bounds rest = box;
+    double held = 1.0;
+    for (int a = 0; a < 3; ++a)
+        if (n[a] >= max_per_axis) {
+            rest.max[a] = rest.min[a];
+            held *= n[a];
+        }
+    if (held == 1.0 || held * 2.0 > static_cast<double>(lambda) * count)
+        return n;
+    const cell3 m = grid_resolution(resolution_box(rest), count, static_cast<float>(lambda / held), max_per_axis);
+    cell3 spread = n;
+    for (int a = 0; a < 3; ++a)
+        if (n[a] < max_per_axis)
+            spread[a] = std::max(n[a], m[a]);
+    const double cells = static_cast<double>(spread.x) * spread.y * spread.z;
+    return cells < 2147483648.0 ? spread : n;
+}
+
 // A grid's shape chosen for the objects `ids` in `box` (their union, not yet grown), lambda cells
 // per object, with each object's cells: the shape the cube-root rule (07.1) gives, or, when that
 // grid would not pay (grid_pays), the one of the densest lower lambda that does. A scene that asks
@@ -313,7 +340,8 @@ inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::
     if (margin > 0.0f && widest / margin < static_cast<float>(max_per_axis))
         max_per_axis = std::max(1, static_cast<int>(widest / margin));
     for (;;) {
-        const cell3 n = grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis);
+        const cell3 n = spread_past_limit(box, grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis),
+                                          count, plan.lambda, max_per_axis);
         plan.shape = grid_shape(count > 0 ? grown(box, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
         plan.references = object_cell_ranges(plan.shape, objects, ids, margins, plan.ranges);
         if (n == cell3(1) || grid_pays(plan.shape, plan.references, count))
