@@ -143,9 +143,14 @@ inline float magnitude(const Bounds& b)
     return std::max({m.x, m.y, m.z});
 }
 
+inline Bounds grown(const Bounds& b, const vec3& margin)
+{
+    return {b.min - margin, b.max + margin};
+}
+
 inline Bounds grown(const Bounds& b, float margin)
 {
-    return {b.min - vec3(margin), b.max + vec3(margin)};
+    return grown(b, vec3(margin));
 }
 
 // Whether box `b` lies within box `in`.
@@ -258,18 +263,17 @@ inline Margins margins_of(const Objects& objects)
     return {reach_around(bulk), reach_around(all)};
 }
 
-// The rounding of a grid's own cell decisions, to add to each object's margin where it is listed:
-// 07.2's boundary i is where float's (p - min) / s reaches i, and the walk's boundary min + i s is
-// taken in double; (p - min), its quotient by s, and s itself (an extent over n) each round by u,
-// at most u of the grid's widest extent in space each: 3u, within 4u = 2^-22.
-inline float grid_rounding(const GridShape& shape)
+// The rounding of a grid's own cell decisions on each axis, to add to each object's margin where it
+// is listed: 07.2's boundary i is where float's (p - min) / s reaches i, and the walk's boundary
+// min + i s is taken in double; (p - min), its quotient by s, and s itself (an extent over n) each
+// round by u, at most u of the grid's extent along that axis in space each: 3u, within 4u = 2^-22.
+inline vec3 grid_rounding(const GridShape& shape)
 {
-    const vec3 e = shape.box.extent();
-    return 0x1p-22f * std::max({e.x, e.y, e.z});
+    return 0x1p-22f * shape.box.extent();
 }
 
-// The cells each object's box, grown by its margin and the grid's own rounding, overlaps (07.3), and how many references they make
-// in all: counted in 64 bits before anything is allocated.
+// The cells each object's box, grown by its margin and the grid's own rounding, overlaps (07.3), and
+// how many references they make in all: counted in 64 bits before anything is allocated.
 inline long long object_cell_ranges(const GridShape& shape, const Objects& objects, const std::vector<std::uint32_t>& ids,
                                     const Margins& margins, std::vector<CellRange>& ranges)
 {
@@ -277,7 +281,7 @@ inline long long object_cell_ranges(const GridShape& shape, const Objects& objec
     long long references = 0;
     for (std::size_t i = 0; i < ids.size(); ++i) {
         const Bounds box = objects.bounds(static_cast<int>(ids[i]));
-        ranges[i] = cells_overlapping(shape, grown(box, margins.of(box) + grid_rounding(shape)));
+        ranges[i] = cells_overlapping(shape, grown(box, vec3(margins.of(box)) + grid_rounding(shape)));
         const cell3 span = ranges[i].last - ranges[i].first + cell3(1);
         references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
     }

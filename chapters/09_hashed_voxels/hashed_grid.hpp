@@ -4,8 +4,9 @@
 //
 // The build sets the bit array, sorts every (cell, object) reference by cell, makes one HashedCell
 // per occupied cell, and files the cells by bucket with a counting sort: three flat arrays and the
-// bits. Before any of the large ones, it weighs what they will take against chapter 07's dense grid
-// and says so when that is many times more (say_memory_weighed).
+// bits. Before any of the large ones, it counts the occupied cells (a grid mostly full is built at
+// chapter 07's lambda instead: hashed_most_occupied), weighs what they will take against chapter 07's
+// dense grid, and says so when that is many times more (say_memory_weighed).
 #pragma once
 
 #include "02_spheres_triangles/scene_query.hpp"

@@ -122,7 +122,7 @@ private:
                 continue;  // one cell again: nothing gained
             // Grown by the margin an object at the cell's coordinates gets (their rounding), and by the
             // parent's own rounding (the cell's corners here in float, the walk's in double).
-            const GridShape child_shape = grid_shape(grown(cell, margins_.of(cell) + grid_rounding(shape)), n);
+            const GridShape child_shape = grid_shape(grown(cell, vec3(margins_.of(cell)) + grid_rounding(shape)), n);
             const std::vector<std::uint32_t> ids(h_.grids[g].grid.object_index.begin() + begin,
                                                  h_.grids[g].grid.object_index.begin() + end);
             std::vector<CellRange> ranges;

@@ -211,7 +211,7 @@ inline bool check_lists(Diagnosis& d, const GridShape& g, const Ray& ray, Interv
                         const Margins& margins)
 {
     for (const int k : objects_hit(ray, range, objects)) {
-        const Bounds box = grown(objects.bounds(k), margins.of(objects.bounds(k)) + grid_rounding(g));
+        const Bounds box = grown(objects.bounds(k), vec3(margins.of(objects.bounds(k))) + grid_rounding(g));
         d.check("07.3", "cells_overlapping");
         const CellRange got = cells_overlapping(g, box);
         const cell3 first = cell_promised(g, box.min), last = cell_promised(g, box.max);

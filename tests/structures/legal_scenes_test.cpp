@@ -524,7 +524,8 @@ TEST_CASE("an eye 5e5 times the scene's size away: every structure answers as br
                     first = show(ray) + ": brute force " + (want_found ? show(want) : "no hit") + ", the structure " +
                             (got_found ? show(got) : "no hit");
         }
-        INFO(s.name << ": " << wrong << " of 4000 rays from the far eye answered unlike brute force; the first: " << first);
+        INFO(s.name << ": " << wrong << " of 4000 rays from the far eye answered unlike brute force; the first: "
+                    << first);
         CHECK(wrong == 0);
     }
 }
