@@ -444,7 +444,8 @@ TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hi
 TEST_CASE("a cluster 0.01 across beside one sphere 1e4 away (ratio 1e6) costs every structure no more than brute force", "[structures]")
 {
     // The margins once took the scene's box for where rays start: 2^-20 of 1e4 is 0.0095, about the
-    // cluster's width, and every structure tested 1.3 to 3 times brute force's objects.
+    // cluster's width, and the hashed grid and the hierarchy of grids tested 1.2 and 1.06 times brute
+    // force's objects on these rays.
     LitScene cluster = with_material();
     Rng rng(45, 0);
     for (int k = 0; k < 20000; ++k)
@@ -459,6 +460,8 @@ TEST_CASE("a cluster 0.01 across beside one sphere 1e4 away (ratio 1e6) costs ev
 
 TEST_CASE("a cluster 0.01 across in the plane of a triangle 1e6 across costs every structure no more than brute force", "[structures]")
 {
+    // The triangle's 5e5 once set every margin (0.48, fifty times the cluster): the hierarchy of grids
+    // tested 1.3 times brute force's objects on these rays.
     LitScene plane = with_material();
     plane.add_triangle({{-5e5f, 0, 5e5f}, {5e5f, 0, 5e5f}, {0, 0, -5e5f}}, 0);
     Rng rng(46, 0);
