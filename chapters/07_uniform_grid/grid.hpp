@@ -30,26 +30,42 @@ namespace rt {
 //
 // How much: each of those roundings is a relative error of u = 2^-24 of the magnitudes it combines
 // (Goldberg's model, as pbrt's error bounds count it: Pharr, Jakob and Humphreys, "Physically Based
-// Rendering", 3rd ed., sec. 3.9), and the magnitudes are distances from the ray's origin o to the
-// point p and the coordinates of p and of the box: a t measures |p - o|, never the scene's size.
+// Rendering", 3rd ed., sec. 3.9, 4th ed., sec. 6.8), and the magnitudes are distances from the ray's
+// origin o to the point p and the coordinates of p and of the box: a t measures |p - o|, never the
+// scene's size.
 //  - the sphere test (02.2) works in double and rounds t to float once: 1 float step of t, 2u |p - o|;
 //  - the watertight test (02.5) gives t as a weighted mean of the corners' heights along the ray,
 //    each carrying a few roundings (shape_tests.hpp, after pbrt sec. 3.9.6): about 9u of the
 //    corners' distance from o, at most |p - o| plus the triangle's own size;
 //  - the slab test's near t, (plane - o) / d, three roundings: 3u |p - o| (its far t is widened
 //    already: Ize, "Robust BVH Ray Traversal", 2013, bounds.hpp);
-//  - the box itself (its corners rounded from a centre and radius, then grown) and a grid's cell
-//    boundaries (min + i s) and cell numbers ((p - min) / s): a few u of the coordinates, |p| and
-//    the grid's corner.
-// Rays start in the scene's box (surfaces) or near it (the eye), so |o| is at most the box's largest
-// coordinate magnitude R, and |p - o| <= R + |p|. The margin is 16 of those roundings,
-// 2^-20 (R + |p|), with |p| the object's own largest coordinate magnitude: it follows the rounding
-// of the coordinates it protects, not the scene's size. (A fixed fraction of the extent cannot:
-// 100,000 spheres in a box 0.01 across beside one sphere 1000 away would grow by 1e-5 of 1000, wider
-// than the cluster, and no cell or node could sort it apart; here they grow by 0.00095.) An eye
-// farther out than R is covered by the slack: the roundings above add up to about 16 u only in the
-// worst case, and most tests' t is within one or two float steps.
+//  - the box itself (its corners rounded from a centre and radius, then grown), the walk's first
+//    point o + t d and a grid's cell numbers ((p - min) / s): a few u of the coordinates, |p| and
+//    |o| (the grid's own part, u of its extent, is grid_rounding's).
+// Together about 16 of them, so the margin is 2^-20 (|p| + D): |p| the object's own largest coordinate
+// magnitude, D the farthest a covered ray's origin lies from the object's points on any axis (which
+// bounds |p - o|, and |o| by |p| + D). D is the width of the box around the object and the rays'
+// reach (Margins, below): the bulk of the scene and 4 of its widths around it, where surfaces and an
+// eye that frames the scene lie. Where the origin lies outside the reach, no margin is promised: such
+// a ray gets brute force's answer (Margins::covers), unless it passes the reach farther off than its
+// hits there could round. An eye 1e6 times the scene's size away rounds a hit's t by a good part of
+// the scene, and sorting objects apart along its rays sorts nothing. Why not the scene's box for D,
+// as once: one far object (a sphere 1e4 away from a cluster 0.01 across, a floor 1e6 across under it)
+// then widens every margin near the origin past the cluster's objects, and no cell or node can sort
+// them apart; and an eye outside that box was covered only by the slack in the 16.
 constexpr float margin_roundings = 0x1p-20f;  // 16 u
+
+// Why 8: the reach is built around the box of the scene's bulk, its objects but the 8 farthest on each
+// side of each axis (or 1 in 100 of them, when that is fewer), so that a few far objects (a sphere 1e4
+// away, a huge floor) do not decide it. A part of the scene made of many objects (a stadium around a
+// teapot, where the eye stands) stays in the bulk: rays start there.
+constexpr int reach_outliers = 8;
+
+// Why 4 widths: rays start on the scene's surfaces, inside the bulk's box, or at an eye that frames
+// the bulk; a view of the bulk at a field of view of 15 degrees or more stands within 4 of its widths.
+// An eye farther out costs brute force's tests for its rays, never a wrong answer; a larger reach
+// costs every object a wider margin.
+constexpr float reach_widths = 4.0f;
 
 // Why 1 << 25 cells (32 Mi, 128 MB of offsets): a dense grid pays for every cell, empty or not;
 // past this the build would take seconds and most of the machine's memory for one scene. A lambda
@@ -127,26 +143,137 @@ inline float magnitude(const Bounds& b)
     return std::max({m.x, m.y, m.z});
 }
 
-// The margins of a scene's objects (margin_roundings above): reach is the scene box's largest
-// coordinate magnitude, where rays start; an object's box grows by 2^-20 (reach + its own
-// magnitude). Every structure of chapters 07-10 grows its objects' boxes by these.
-struct Margins {
-    float reach = 0.0f;
-    float of(const Bounds& object) const { return margin_roundings * (reach + magnitude(object)); }
-};
-
-inline Margins margins_of(const Bounds& scene)
+inline Bounds grown(const Bounds& b, const vec3& margin)
 {
-    return {magnitude(scene)};
+    return {b.min - margin, b.max + margin};
 }
 
 inline Bounds grown(const Bounds& b, float margin)
 {
-    return {b.min - vec3(margin), b.max + vec3(margin)};
+    return grown(b, vec3(margin));
 }
 
-// The cells each object's box, grown by its margin, overlaps (07.3), and how many references they make
-// in all: counted in 64 bits before anything is allocated.
+// Whether box `b` lies within box `in`.
+inline bool inside(const Bounds& b, const Bounds& in)
+{
+    return b.min.x >= in.min.x && b.min.y >= in.min.y && b.min.z >= in.min.z && b.max.x <= in.max.x &&
+           b.max.y <= in.max.y && b.max.z <= in.max.z;
+}
+
+// The margins of a scene's objects (margin_roundings above), and the rays they cover. An object inside
+// `reach` (the scene's bulk, reach_widths of its width around it) grows by 2^-20 (its own magnitude +
+// the width of the box around it and the reach): every ray that starts in the reach is covered. An
+// object outside it (a far sphere, a huge floor: a few at most) grows by the same with `wide` (the
+// whole scene's box, reach_widths of its width around it) for the reach, so a ray that starts in the
+// wide box is covered for those objects; it is covered for the bulk's too when it passes the reach
+// farther from them than the rounding its hits there would carry (covers). Every structure of chapters
+// 07-10 grows its objects' boxes by these, and answers a ray they do not cover with brute force. The
+// default reaches everywhere: the margins of a grid built by hand (the tests') are never asked.
+struct Margins {
+    Bounds reach{point3(-infinity), point3(infinity)};
+    Bounds wide{point3(-infinity), point3(infinity)};
+
+    float of(const Bounds& object) const
+    {
+        Bounds both = object;
+        both.grow(inside(object, reach) ? reach : wide);
+        const vec3 e = both.extent();
+        return margin_roundings * (magnitude(object) + std::max({e.x, e.y, e.z}));
+    }
+
+    // Whether the margins cover `ray` over `range`: it starts in the reach, or in the wide box on a
+    // line that stays off the reach's box by more than a bulk object's margin for this origin would be
+    // (the margin of the reach grown to the origin; worked out in double, so its own rounding is
+    // nothing beside it). False for a NaN origin.
+    bool covers(const Ray& ray, Interval range) const
+    {
+        if (contains(reach, ray.origin))
+            return true;
+        if (!contains(wide, ray.origin))
+            return false;
+        Bounds with_origin = reach;
+        with_origin.grow(ray.origin);
+        const vec3 e = with_origin.extent();
+        const double off = 2.0 * margin_roundings * (magnitude(reach) + std::max({e.x, e.y, e.z}));
+        double near = range.min, far = range.max;
+        for (int a = 0; a < 3; ++a) {
+            const double o = ray.origin[a], d = ray.dir[a];
+            const double lo = reach.min[a] - off, hi = reach.max[a] + off;
+            if (d == 0.0) {
+                if (o < lo || o > hi)
+                    return true;  // parallel to the slab, outside it: the line never meets the reach
+                continue;
+            }
+            const double t0 = (lo - o) / d, t1 = (hi - o) / d;
+            near = std::max(near, std::min(t0, t1));
+            far = std::min(far, std::max(t0, t1));
+        }
+        return near > far;
+    }
+
+    static bool contains(const Bounds& b, const point3& p)
+    {
+        return p.x >= b.min.x && p.x <= b.max.x && p.y >= b.min.y && p.y <= b.max.y && p.z >= b.min.z &&
+               p.z <= b.max.z;
+    }
+};
+
+// The box of the scene's bulk, from its objects' boxes: on each axis from the (q + 1)-th least of
+// their minima to the (q + 1)-th greatest of their maxima, q the lesser of reach_outliers and 1 in 100
+// of them (empty for none).
+inline Bounds bulk_of(const std::vector<Bounds>& boxes)
+{
+    Bounds bulk;
+    if (boxes.empty())
+        return bulk;
+    const std::size_t q = std::min(boxes.size() / 100, static_cast<std::size_t>(reach_outliers));
+    std::vector<float> low(boxes.size()), high(boxes.size());
+    for (int a = 0; a < 3; ++a) {
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+            low[k] = boxes[k].min[a];
+            high[k] = -boxes[k].max[a];
+        }
+        std::nth_element(low.begin(), low.begin() + static_cast<std::ptrdiff_t>(q), low.end());
+        std::nth_element(high.begin(), high.begin() + static_cast<std::ptrdiff_t>(q), high.end());
+        bulk.min[a] = low[q];
+        bulk.max[a] = -high[q];
+    }
+    return bulk;
+}
+
+// A box grown by reach_widths of its largest width on every side.
+inline Bounds reach_around(const Bounds& b)
+{
+    const vec3 e = b.extent();
+    return grown(b, reach_widths * std::max({e.x, e.y, e.z}));
+}
+
+// The margins of `objects`' structures: the reach around their bulk, the wide box around them all.
+inline Margins margins_of(const Objects& objects)
+{
+    std::vector<Bounds> boxes(static_cast<std::size_t>(objects.size()));
+    Bounds all;
+    for (int k = 0; k < objects.size(); ++k) {
+        boxes[static_cast<std::size_t>(k)] = objects.bounds(k);
+        all.grow(boxes[static_cast<std::size_t>(k)]);
+    }
+    const Bounds bulk = bulk_of(boxes);
+    if (bulk.empty())
+        return {Bounds{point3(0.0f), point3(0.0f)}, Bounds{point3(0.0f), point3(0.0f)}};
+    return {reach_around(bulk), reach_around(all)};
+}
+
+// The rounding of a grid's own cell decisions on each axis, to add to each object's margin where it
+// is listed: 07.2's boundary i is where float's (p - min) / s reaches i, and the walk's boundary
+// min + i s is taken in double; (p - min), its quotient by s, and s itself (an extent over n) each
+// round by u, at most u of the grid's extent along that axis in space each: 3u, within 4u = 2^-22.
+inline vec3 grid_rounding(const GridShape& shape)
+{
+    return 0x1p-22f * shape.box.extent();
+}
+
+// The cells each object's box, grown by its margin and the grid's own rounding, overlaps (07.3), and
+// how many references they make in all: counted in 64 bits before anything is allocated.
 inline long long object_cell_ranges(const GridShape& shape, const Objects& objects, const std::vector<std::uint32_t>& ids,
                                     const Margins& margins, std::vector<CellRange>& ranges)
 {
@@ -154,11 +281,38 @@ inline long long object_cell_ranges(const GridShape& shape, const Objects& objec
     long long references = 0;
     for (std::size_t i = 0; i < ids.size(); ++i) {
         const Bounds box = objects.bounds(static_cast<int>(ids[i]));
-        ranges[i] = cells_overlapping(shape, grown(box, margins.of(box)));
+        ranges[i] = cells_overlapping(shape, grown(box, vec3(margins.of(box)) + grid_rounding(shape)));
         const cell3 span = ranges[i].last - ranges[i].first + cell3(1);
         references += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
     }
     return references;
+}
+
+// The resolution `n` (07.1's for `box`, count objects, lambda) with the cells an axis held at
+// max_per_axis could not take spread over the other axes: the cube-root rule gives every axis cells of
+// one side s, and an axis far longer than the others (a sphere 1e4 away from a cluster 0.01 across)
+// reaches the limit with cells far wider than s, leaving the others a few cells each: the cluster
+// then lies in a few cells, and a ray through it tests more than brute force. The other axes get the
+// rule's answer for the box without the held axes, lambda / (their cells) per object, so the grid
+// still holds about lambda count cells, and no more than it holds already at 2^31 (an int address).
+inline cell3 spread_past_limit(const Bounds& box, cell3 n, int count, float lambda, int max_per_axis)
+{
+    Bounds rest = box;
+    double held = 1.0;
+    for (int a = 0; a < 3; ++a)
+        if (n[a] >= max_per_axis) {
+            rest.max[a] = rest.min[a];
+            held *= n[a];
+        }
+    if (held == 1.0 || held * 2.0 > static_cast<double>(lambda) * count)
+        return n;
+    const cell3 m = grid_resolution(resolution_box(rest), count, static_cast<float>(lambda / held), max_per_axis);
+    cell3 spread = n;
+    for (int a = 0; a < 3; ++a)
+        if (n[a] < max_per_axis)
+            spread[a] = std::max(n[a], m[a]);
+    const double cells = static_cast<double>(spread.x) * spread.y * spread.z;
+    return cells < 2147483648.0 ? spread : n;
 }
 
 // A grid's shape chosen for the objects `ids` in `box` (their union, not yet grown), lambda cells
@@ -190,7 +344,8 @@ inline GridPlan plan_grid(const Bounds& box, const Objects& objects, const std::
     if (margin > 0.0f && widest / margin < static_cast<float>(max_per_axis))
         max_per_axis = std::max(1, static_cast<int>(widest / margin));
     for (;;) {
-        const cell3 n = grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis);
+        const cell3 n = spread_past_limit(box, grid_resolution(resolution_box(box), count, plan.lambda, max_per_axis),
+                                          count, plan.lambda, max_per_axis);
         plan.shape = grid_shape(count > 0 ? grown(box, margin) : Bounds{point3(0.0f), point3(1.0f)}, n);
         plan.references = object_cell_ranges(plan.shape, objects, ids, margins, plan.ranges);
         if (n == cell3(1) || grid_pays(plan.shape, plan.references, count))
@@ -258,22 +413,23 @@ inline Bounds bounds_of_all(const Objects& objects)
     return scene;
 }
 
-// The plan (plan_grid) of a grid over every object of the scene's box `scene`, up to max_per_axis
-// cells an axis; a lambda lowered is said as a notice in the name of `structure`.
-inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, float lambda, int max_per_axis,
-                              const char* structure)
+// The plan (plan_grid) of a grid over every object of the scene's box `scene` with the objects'
+// margins, up to max_per_axis cells an axis; a lambda lowered is said as a notice in the name of `structure`.
+inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, const Margins& margins, float lambda,
+                              int max_per_axis, const char* structure)
 {
     const int count = objects.size();
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
-    const GridPlan plan = plan_grid(scene, objects, all, lambda, margins_of(scene), max_per_axis);
+    const GridPlan plan = plan_grid(scene, objects, all, lambda, margins, max_per_axis);
     say_lambda_lowered(structure, plan, lambda, count);
     return plan;
 }
 
-// Builds the grid over every object, lambda cells per object (lowered where it would not pay).
+// Builds the grid over every object, lambda cells per object (lowered where it would not pay), each
+// object's box grown by its margin (`margins`, margins_of(objects)).
 // Throws InputError when the resolution asked for would pass max_grid_cells.
-inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = nullptr)
+inline Grid build_grid(const Objects& objects, const Margins& margins, float lambda, GridStats* stats = nullptr)
 {
     const Timer timer;
     const int count = objects.size();
@@ -286,7 +442,7 @@ inline Grid build_grid(const Objects& objects, float lambda, GridStats* stats = 
                          " cells (lambda " + std::to_string(lambda) + ", " + std::to_string(count) +
                          " objects) passes the limit of " + std::to_string(max_grid_cells) +
                          " cells: choose a smaller lambda");
-    const GridPlan plan = plan_over_all(objects, scene, lambda, max_cells_per_axis, "the grid");
+    const GridPlan plan = plan_over_all(objects, scene, margins, lambda, max_cells_per_axis, "the grid");
     grid.shape = plan.shape;
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
@@ -410,12 +566,17 @@ inline void report_grid(std::ostream& out, const GridStats& s)
 
 class UniformGrid final : public Accelerator {
 public:
-    UniformGrid(const Objects& objects, float lambda) : grid_(build_grid(objects, lambda, &stats_)) {}
-    // A grid built by other means (the tests build small ones by hand).
+    UniformGrid(const Objects& objects, float lambda)
+        : margins_(margins_of(objects)), grid_(build_grid(objects, margins_, lambda, &stats_))
+    {
+    }
+    // A grid built by other means (the tests build small ones by hand): its margins reach everywhere.
     explicit UniformGrid(Grid grid) : grid_(std::move(grid)) {}
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach
         GridWalk walk = start_walk(grid_.shape, ray, range);
         const auto query = [&](const GridWalk& w, ObjectHit& best) {
             return closest_in_cell(grid_, w, ray, range, objects, best);
@@ -425,6 +586,8 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().any(ray, range, objects);
         GridWalk walk = start_walk(grid_.shape, ray, range);
         ObjectHit hit;
         const auto any_in = [&](const GridWalk& w) {
@@ -438,9 +601,11 @@ public:
 
     const Grid& grid() const { return grid_; }
     const GridStats& stats() const { return stats_; }
+    const Margins& margins() const { return margins_; }
 
 private:
     GridStats stats_;
+    Margins margins_;
     Grid grid_;
 };
 

@@ -28,6 +28,8 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!grid_.margins().covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
         const Grid& g = grid_.grid();
         GridWalk walk = start_walk(g.shape, ray, range);
         if (walk.missed)
@@ -42,6 +44,8 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!grid_.margins().covers(ray, range))
+            return brute_force().any(ray, range, objects);
         const Grid& g = grid_.grid();
         GridWalk walk = start_walk(g.shape, ray, range);
         if (walk.missed)

@@ -4,8 +4,9 @@
 //
 // The build sets the bit array, sorts every (cell, object) reference by cell, makes one HashedCell
 // per occupied cell, and files the cells by bucket with a counting sort: three flat arrays and the
-// bits. Before any of the large ones, it weighs what they will take against chapter 07's dense grid
-// and says so when that is many times more (say_memory_weighed).
+// bits. Before any of the large ones, it counts the occupied cells (a grid mostly full is built at
+// chapter 07's lambda instead: hashed_most_occupied), weighs what they will take against chapter 07's
+// dense grid, and says so when that is many times more (say_memory_weighed).
 #pragma once
 
 #include "02_spheres_triangles/scene_query.hpp"
@@ -70,6 +71,15 @@ constexpr float dense_grid_lambda = 4.0f;
 // apart, and the memory grows with lambda.
 constexpr double hashed_memory_factor = 8.0;
 
+// Why half: the table stores an occupied cell at about three times a dense cell's cost (its 12 bytes
+// and two bucket words, against two offsets) and skips an empty one by a bit; it is for grids whose
+// cells are mostly empty. Where at least half the cells hold something, the cells are finer than
+// the objects (a flat scene's one layer: every cell holds part of a triangle), a finer grid slices
+// them rather than sorts them apart, and every cell it adds is one more the table holds. Such a
+// scene is built at chapter 07's lambda (dense_grid_lambda): the table then holds no more cells
+// than the dense grid, the occupied cells it was asked to hold sized from what it will hold.
+constexpr double hashed_most_occupied = 0.5;
+
 // Why 64 MB: below it a build's memory concerns no machine the kit runs on, whatever the ratio
 // (chapter 07's dense grid alone may take 128 MB of offsets, max_grid_cells). As below
 // grid_pays_floor tests a ray, a scene of a few thousand objects keeps the lambda it asks for
@@ -112,6 +122,8 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
         GridWalk walk = start_walk(shape_, ray, range);
         if (walk.missed)
             return false;
@@ -125,6 +137,8 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().any(ray, range, objects);
         GridWalk walk = start_walk(shape_, ray, range);
         if (walk.missed)
             return false;
@@ -207,12 +221,21 @@ private:
     {
         const Timer timer;
         const Bounds scene = bounds_of_all(objects);
-        const GridPlan plan = plan_shape(objects, scene, lambda);
+        margins_ = margins_of(objects);
+        GridPlan plan = plan_shape(objects, scene, margins_, lambda);
         shape_ = plan.shape;
         // The bits first: they count the occupied cells, so that what the build will hold is known
         // before any of its large arrays is allocated.
-        const long long occupied = set_bits(shape_, plan.ranges, bits_);
-        const std::size_t dense = weigh_memory(objects, scene, plan, occupied, lambda, table_size);
+        long long occupied = set_bits(shape_, plan.ranges, bits_);
+        if (static_cast<double>(occupied) > hashed_most_occupied * static_cast<double>(cells_of(shape_)) &&
+            plan.lambda > dense_grid_lambda) {
+            GridPlan dense_cells = plan_shape(objects, scene, margins_, dense_grid_lambda);
+            say_mostly_occupied(plan, occupied, dense_cells.lambda);
+            plan = std::move(dense_cells);
+            shape_ = plan.shape;
+            occupied = set_bits(shape_, plan.ranges, bits_);
+        }
+        const std::size_t dense = weigh_memory(objects, scene, margins_, plan, occupied, lambda, table_size);
         const std::vector<HashedCell> by_address = sort_references(plan.ranges, plan.references, occupied);
         const long long collisions = file_by_bucket(by_address, table_size_for(table_size, occupied));
 
@@ -237,7 +260,7 @@ private:
     // The grid's shape and each object's cells, lambda cells per object up to
     // max_hashed_cells_per_axis: chapter 07's plan, whose references are counted before anything is
     // allocated, and which lowers lambda where such a grid would not pay (grid_pays).
-    static GridPlan plan_shape(const Objects& objects, const Bounds& scene, float lambda)
+    static GridPlan plan_shape(const Objects& objects, const Bounds& scene, const Margins& margins, float lambda)
     {
         const int count = objects.size();
         const cell3 asked = grid_resolution(resolution_box(scene), count, lambda, max_hashed_cells_per_axis);
@@ -245,13 +268,34 @@ private:
             throw InputError("a hashed grid of " + std::to_string(asked.x) + " x " + std::to_string(asked.y) + " x " +
                              std::to_string(asked.z) +
                              " cells passes the limit of 2^31 cell addresses: choose a smaller lambda");
-        return plan_over_all(objects, scene, lambda, max_hashed_cells_per_axis, "the hashed grid");
+        return plan_over_all(objects, scene, margins, lambda, max_hashed_cells_per_axis, "the hashed grid");
     }
 
     // The table's size: the one asked for, or, for 0, the least prime at least twice the occupied cells.
     static std::uint32_t table_size_for(std::uint32_t table_size, long long occupied)
     {
         return table_size > 0 ? table_size : prime_at_least(2 * static_cast<std::uint64_t>(std::max(1LL, occupied)));
+    }
+
+    static long long cells_of(const GridShape& shape)
+    {
+        return static_cast<long long>(shape.n.x) * shape.n.y * shape.n.z;
+    }
+
+    // The notice of a grid whose cells would be mostly occupied (hashed_most_occupied), built at
+    // chapter 07's lambda instead.
+    static void say_mostly_occupied(const GridPlan& plan, long long occupied, float built)
+    {
+        const cell3 n = plan.shape.n;
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "the hashed grid: at lambda %g (%d x %d x %d cells) %.0f%% of its cells would hold objects: "
+                      "they are finer than the objects (a flat scene fills its one layer), and finer cells would "
+                      "slice them rather than sort them apart; built at lambda %g, chapter 07's, instead",
+                      static_cast<double>(plan.lambda), n.x, n.y, n.z,
+                      100.0 * static_cast<double>(occupied) / static_cast<double>(cells_of(plan.shape)),
+                      static_cast<double>(built));
+        notice(line);
     }
 
     // A lambda the notice offers instead, and what its build would hold (0: none found).
@@ -267,8 +311,8 @@ private:
     // plans stay under the floor and within the factor (a pass over the objects and their cells for
     // each). The build goes on at the lambda asked for: memory is the user's to trade for speed
     // (finer cells test fewer objects), and nothing is answered wrong. Returns the dense grid's bytes.
-    static std::size_t weigh_memory(const Objects& objects, const Bounds& scene, const GridPlan& plan,
-                                    long long occupied, float asked, std::uint32_t table_size)
+    static std::size_t weigh_memory(const Objects& objects, const Bounds& scene, const Margins& margins,
+                                    const GridPlan& plan, long long occupied, float asked, std::uint32_t table_size)
     {
         const int count = objects.size();
         const auto peak_of = [&](const GridPlan& p, long long occ) {
@@ -277,7 +321,6 @@ private:
                                       table_size_for(table_size, occ));
         };
         const std::size_t peak = peak_of(plan, occupied);
-        const Margins margins = margins_of(scene);
         std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
         std::iota(all.begin(), all.end(), 0u);
         const GridPlan dense_plan = plan_grid(scene, objects, all, dense_grid_lambda, margins, max_cells_per_axis);
@@ -432,6 +475,7 @@ private:
         return occupied;
     }
 
+    Margins margins_;
     GridShape shape_;
     HashTable table_;
     OccupancyBits bits_;

@@ -136,7 +136,8 @@ constexpr int bvh_stack_size = 64;
 //  - Closest hit (any_hit false): the nearest hit of all the tree's objects, object and t as brute
 //    force answers; at equal t the lower object number wins. True, with that hit in `hit`. (Brute
 //    force's answer, that is, on the kit's trees: their boxes hold their objects' grown by a margin
-//    (bvh.hpp), which covers the rounding of a hit's t.)
+//    (bvh.hpp), which covers the rounding of a hit's t for the rays it covers; bvh.hpp answers the
+//    others, from an eye far outside the scene, with brute force.)
 //  - Any hit (any_hit true): the first object hit, in the order below, ends the query at once,
 //    nearer or not: true, with that hit in `hit`, and no further object tested.
 //  - A tree of no nodes, and a ray that is not valid_ray (bounds.hpp), hit nothing: false, with no
@@ -203,8 +204,8 @@ struct HGrid {
 //    a grid included.
 // Returns whether best changed. The root's walk is hgrid_closest(h, 0, ray, range, range, objects,
 // best). A child grid's box is its cell's box grown by the margin an object at the cell's
-// coordinates would get (grid.hpp's Margins), so the part of the ray inside the cell always lies
-// within it.
+// coordinates would get (grid.hpp's Margins) and by the parent grid's own rounding (grid_rounding),
+// so the part of the ray inside the cell always lies within it.
 // The lesson's section "The hierarchy of grids (EXERCISE 10.5)" derives it.
 // Example: a root of two cells along x over (0, -1, -1) to (5, 3, 2), its cell 0 (x up to 2.5)
 // holding a grid of two cells that lists object 1, a sphere of radius 0.2 at (1.5, 0.5, 0.5): the

@@ -54,11 +54,15 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
         return bvh_query(bvh_, ray, range, objects, /*any_hit=*/false, hit);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().any(ray, range, objects);
         ObjectHit hit;
         return bvh_query(bvh_, ray, range, objects, /*any_hit=*/true, hit);
     }
@@ -74,6 +78,7 @@ public:
     }
     const BvhStats& stats() const { return stats_; }
     const Bvh& bvh() const { return bvh_; }
+    const Margins& margins() const { return margins_; }
 
 private:
     // The most objects a leaf can count (BvhNode::count is 16 bits): a larger group that 10.3 would
@@ -92,12 +97,12 @@ private:
         // carries its test's rounding, which can put the hit point a little outside the object's own
         // box (a ray leaving a plane at a grazing angle, a triangle far larger than its distance from
         // the ray's origin); brute force reports such a hit, and the BVH must find it too. The
-        // margin follows the rounding of the object's coordinates and of the rays' origins, so a
-        // small object near the origin keeps a small box beside a far one.
-        const Margins margins = margins_of(bounds_of_all(objects));
+        // margin follows the rounding of the object's coordinates and of the rays' origins within the
+        // margins' reach, so a small object near the origin keeps a small box beside a far one.
+        margins_ = margins_of(objects);
         for (int k = 0; k < n; ++k) {
             const Bounds box = objects.bounds(k);
-            boxes_[k] = grown(box, margins.of(box));
+            boxes_[k] = grown(box, margins_.of(box));
             centres_[k] = boxes_[k].centre();
         }
         bvh_.object_index.resize(static_cast<std::size_t>(n));
@@ -255,6 +260,7 @@ private:
     }
 
     BvhSettings settings_;
+    Margins margins_;
     Bvh bvh_;
     BvhStats stats_;
     std::vector<Bounds> boxes_;

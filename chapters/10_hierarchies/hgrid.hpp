@@ -40,10 +40,10 @@ public:
             throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
                              std::to_string(max_hgrid_depth) + ", got " + std::to_string(settings.max_depth));
         const Timer timer;
-        h_.grids.push_back({build_grid(objects, settings.lambda), {}});
+        // The margins are the root's, at every level: each object's own (grid.hpp's Margins).
+        margins_ = margins_of(objects);
+        h_.grids.push_back({build_grid(objects, margins_, settings.lambda), {}});
         h_.grids[0].child.assign(static_cast<std::size_t>(h_.grids[0].grid.shape.cell_count()), -1);
-        // The margins are the root's (build_grid's), at every level: each object's own.
-        margins_ = margins_of(bounds_of_all(objects));
         cells_ = h_.grids[0].grid.shape.cell_count();
         references_ = static_cast<long long>(h_.grids[0].grid.object_index.size());
         subdivide(objects, 0, 0);
@@ -60,7 +60,8 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        if (cells_finer_than_t(ray, range))
+        // Outside the margins' reach (grid.hpp), or cells finer than t's steps: brute force's answer.
+        if (!margins_.covers(ray, range) || cells_finer_than_t(ray, range))
             return brute_force().closest(ray, range, objects, hit);
         ObjectHit best;
         if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
@@ -71,7 +72,7 @@ public:
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
-        if (cells_finer_than_t(ray, range))
+        if (!margins_.covers(ray, range) || cells_finer_than_t(ray, range))
             return brute_force().any(ray, range, objects);
         return any_in(0, ray, range, range, objects);
     }
@@ -119,8 +120,9 @@ private:
             const cell3 n = grid_resolution(resolution_box(cell), count, settings_.lambda);
             if (n == cell3(1))
                 continue;  // one cell again: nothing gained
-            // Grown by the margin an object at the cell's coordinates gets: their rounding.
-            const GridShape child_shape = grid_shape(grown(cell, margins_.of(cell)), n);
+            // Grown by the margin an object at the cell's coordinates gets (their rounding), and by the
+            // parent's own rounding (the cell's corners here in float, the walk's in double).
+            const GridShape child_shape = grid_shape(grown(cell, vec3(margins_.of(cell)) + grid_rounding(shape)), n);
             const std::vector<std::uint32_t> ids(h_.grids[g].grid.object_index.begin() + begin,
                                                  h_.grids[g].grid.object_index.begin() + end);
             std::vector<CellRange> ranges;

@@ -355,6 +355,7 @@ public:
         const Timer timer;
         const BvhAccel binary(objects, settings);
         const Bvh& b = binary.bvh();
+        margins_ = binary.margins();
         tree_.object_index = b.object_index;
         if (!b.nodes.empty()) {
             if (b.nodes[0].count > 0)
@@ -370,10 +371,14 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
         return ready(ray) && WideQuery<QueryKind::closest>(tree_, ray, range, objects).run(hit);
     }
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (!margins_.covers(ray, range))
+            return brute_force().any(ray, range, objects);
         ObjectHit hit;
         return ready(ray) && WideQuery<QueryKind::any>(tree_, ray, range, objects).run(hit);
     }
@@ -475,6 +480,7 @@ private:
     // A tree with something in it, and a ray the slab test can take (common/bounds.hpp).
     bool ready(const Ray& ray) const { return !tree_.nodes.empty() && valid_ray(ray); }
 
+    Margins margins_;
     WideBvh tree_;
     std::size_t bytes_ = 0;
     double build_seconds_ = 0.0;

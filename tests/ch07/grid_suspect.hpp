@@ -211,7 +211,7 @@ inline bool check_lists(Diagnosis& d, const GridShape& g, const Ray& ray, Interv
                         const Margins& margins)
 {
     for (const int k : objects_hit(ray, range, objects)) {
-        const Bounds box = grown(objects.bounds(k), margins.of(objects.bounds(k)));
+        const Bounds box = grown(objects.bounds(k), vec3(margins.of(objects.bounds(k))) + grid_rounding(g));
         d.check("07.3", "cells_overlapping");
         const CellRange got = cells_overlapping(g, box);
         const cell3 first = cell_promised(g, box.min), last = cell_promised(g, box.max);
@@ -259,7 +259,7 @@ inline std::string diagnose_grid(const UniformGrid& grid, const Ray& ray, Interv
     d.exercised = "07.1-07.6 (07.1 the resolution, 07.2-07.3 the lists, 07.4-07.5 the walk, 07.6 the cell's query)";
     const Grid& g = grid.grid();
     const GridShape& shape = g.shape;
-    if (!check_lists(d, shape, ray, range, objects, margins_of(bounds_of_all(objects))))
+    if (!check_lists(d, shape, ray, range, objects, margins_of(objects)))
         return d.text();
     bool missed = false;
     std::optional<GridWalk> w = check_start(d, shape, ray, range, missed);

@@ -93,7 +93,7 @@ TEST_CASE("the BVH's build: each box is the box around what it holds, and every 
             const Objects objects = objects_of(scene, lit_tests);  // reads the scene's arrays
             const BvhAccel bvh(objects, setting.settings);
             std::map<std::uint32_t, int> seen;
-                        check_node(objects, margins_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+                        check_node(objects, margins_of(objects), bvh.bvh(), 0, seen);
             INFO("depth " << bvh.stats().depth << ", limit " << setting.settings.max_depth);
             CHECK(bvh.stats().depth <= setting.settings.max_depth);
             CHECK(static_cast<int>(seen.size()) == objects.size());
@@ -157,7 +157,7 @@ TEST_CASE("more objects at one centre than a leaf can count are halved, each obj
     const Objects objects = objects_of(scene, lit_tests);
     const BvhAccel bvh(objects);
     std::map<std::uint32_t, int> seen;
-    check_node(objects, margins_of(bounds_of_all(objects)), bvh.bvh(), 0, seen);
+    check_node(objects, margins_of(objects), bvh.bvh(), 0, seen);
     CHECK(static_cast<int>(seen.size()) == objects.size());
     INFO(bvh.stats().nodes << " nodes, " << bvh.stats().leaves << " leaves");
     CHECK(bvh.stats().leaves >= 2);

@@ -182,7 +182,7 @@ TEST_CASE("a scene flat in a coordinate plane through 0 builds a flat grid and a
     check("50,000 triangles at z = 0", floor, looking_at(point3(n / 2.0f, n / 2.0f, 0.0f), n / 2.0f), 80);
     const Objects objects = objects_of(floor, lit_tests);
     GridStats stats;
-    build_grid(objects, ch07::default_lambda, &stats);
+    build_grid(objects, margins_of(objects), ch07::default_lambda, &stats);
     INFO("the grid over 50,000 triangles at z = 0: " << stats.resolution.x << " x " << stats.resolution.y << " x "
                                                       << stats.resolution.z);
     CHECK(stats.resolution.z == 1);
@@ -439,4 +439,96 @@ TEST_CASE("one triangle 2e5 across over 5,000 triangles 1e-3 across costs the hi
     check("a triangle 2e5 across over 5,000 triangles 1e-3 across", huge, view, 200, [](const std::string& structure) {
         return structure == "hgrid" ? WorkBound{1.0, 0.0} : WorkBound{};
     });
+}
+
+TEST_CASE("a cluster 0.01 across beside one sphere 1e4 away (ratio 1e6) costs every structure no more than brute force", "[structures]")
+{
+    // The margins once took the scene's box for where rays start: 2^-20 of 1e4 is 0.0095, about the
+    // cluster's width, and the hashed grid and the hierarchy of grids tested 1.2 and 1.06 times brute
+    // force's objects on these rays.
+    LitScene cluster = with_material();
+    Rng rng(45, 0);
+    for (int k = 0; k < 20000; ++k)
+        cluster.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
+    cluster.add_sphere({{1e4f, 0, 0}, 0.01f}, 0);
+    NffView view;
+    view.from = point3(0.01f, 0.012f, 0.03f);
+    view.at = point3(0.0f);
+    check("a cluster 0.01 across beside a sphere at x = 1e4", cluster, view, 40,
+          [](const std::string&) { return WorkBound{1.0, 0.0}; });
+}
+
+TEST_CASE("a cluster 0.01 across in the plane of a triangle 1e6 across costs every structure no more than brute force", "[structures]")
+{
+    // The triangle's 5e5 once set every margin (0.48, fifty times the cluster): the hierarchy of grids
+    // tested 1.3 times brute force's objects on these rays.
+    LitScene plane = with_material();
+    plane.add_triangle({{-5e5f, 0, 5e5f}, {5e5f, 0, 5e5f}, {0, 0, -5e5f}}, 0);
+    Rng rng(46, 0);
+    for (int k = 0; k < 20000; ++k)
+        plane.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
+    NffView view;
+    view.from = point3(0.01f, 0.012f, 0.03f);
+    view.at = point3(0.0f);
+    check("a cluster 0.01 across in the plane of a triangle 1e6 across", plane, view, 40,
+          [](const std::string&) { return WorkBound{1.0, 0.0}; });
+}
+
+TEST_CASE("one flat triangle 2e6 across over 20,000 triangles 5e-3 across costs the hierarchy of grids no more than brute force", "[structures]")
+{
+    // The hierarchy of grids once tested 4.3 times brute force's objects here (the margins of the
+    // small triangles were 2^-20 of 1e6, about 0.95).
+    LitScene huge = with_material();
+    huge.add_triangle({{-1e6f, 0, 1e6f}, {1e6f, 0, 1e6f}, {0, 0, -1e6f}}, 0);
+    for (int i = 0; i < 142; ++i)
+        for (int j = 0; j < 142; ++j) {
+            const float x = 0.007f * (i - 71), z = 0.007f * (j - 71), y = 0.002f * (1 + (i + j) % 3);
+            huge.add_triangle({{x, y, z}, {x + 0.005f, y, z}, {x, y + 3e-4f, z + 0.005f}}, 0);
+        }
+    NffView view;
+    view.from = point3(0.3f, 0.5f, 0.8f);
+    view.at = point3(0.0f);
+    check("a triangle 2e6 across over 20,164 triangles 5e-3 across", huge, view, 40,
+          [](const std::string& structure) { return structure == "hgrid" ? WorkBound{1.0, 0.0} : WorkBound{}; });
+}
+
+TEST_CASE("an eye 5e5 times the scene's size away: every structure answers as brute force does", "[structures]")
+{
+    // 4,000 triangles in a box 1 across seen from 5e5 away: a hit's t there rounds by some 0.03 of
+    // the scene, past any margin a cell could afford; the structures once differed on 15 of 4096 such
+    // rays (the margins assumed rays start near the scene's box).
+    LitScene far = with_material();
+    Rng rng(47, 0);
+    for (int k = 0; k < 4000; ++k) {
+        const vec3 c = drawn(rng, vec3(-0.5f), vec3(1.0f));
+        const vec3 a = drawn(rng, vec3(-0.03f), vec3(0.06f)), b = drawn(rng, vec3(-0.03f), vec3(0.06f)),
+                   d = drawn(rng, vec3(-0.03f), vec3(0.06f));
+        far.add_triangle({c + a, c + b, c + d}, 0);
+    }
+    NffView view;
+    view.from = point3(3e5f, 2e5f, 4e5f);
+    view.at = point3(0.0f);
+    // The rays from the eye: agreement::compare spreads them 0.6 radians about the view, so most miss
+    // the scene; these are aimed at its box.
+    const Objects objects = objects_of(far, lit_tests);
+    for (const Structure& s : structures()) {
+        const std::unique_ptr<Accelerator> built = s.make(objects, at_density(s.default_lambda));
+        int wrong = 0;
+        std::string first;
+        Rng aim(48, 0);
+        for (int k = 0; k < 4000; ++k) {
+            const vec3 target = drawn(aim, vec3(-0.5f), vec3(1.0f));
+            const Ray ray{view.from, glm::normalize(target - view.from)};
+            ObjectHit want, got;
+            const bool want_found = brute_force().closest(ray, {0.0f, infinity}, objects, want);
+            const bool got_found = built->closest(ray, {0.0f, infinity}, objects, got);
+            if (want_found != got_found || (want_found && (want.object != got.object || want.t != got.t)))
+                if (wrong++ == 0)
+                    first = show(ray) + ": brute force " + (want_found ? show(want) : "no hit") + ", the structure " +
+                            (got_found ? show(got) : "no hit");
+        }
+        INFO(s.name << ": " << wrong << " of 4000 rays from the far eye answered unlike brute force; the first: "
+                    << first);
+        CHECK(wrong == 0);
+    }
 }

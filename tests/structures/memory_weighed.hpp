@@ -26,7 +26,7 @@ inline const std::string said_words = " its build holds up to ";
 inline std::size_t dense_peak(const Objects& objects)
 {
     GridStats stats;
-    build_grid(objects, ch07::default_lambda, &stats);
+    build_grid(objects, margins_of(objects), ch07::default_lambda, &stats);
     return dense_build_bytes(objects.size(), stats.references, stats.cells);
 }
 
