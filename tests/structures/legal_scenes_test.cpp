@@ -402,15 +402,34 @@ TEST_CASE("copies of a sliver whose float t lies beyond its bound's reach tie to
     check_ray(corner, Ray{{3.99999999e-06f, 3.99999999e-06f, 3.99999999e-06f}, {0.577350259f, 0.577350259f, 0.577350259f}}, 0.25f);
 }
 
+namespace {
+
+// `count` spheres of radius 2e-4 drawn (seeded) in a box 0.01 across about the origin.
+void add_cluster(LitScene& scene, int count, std::uint64_t seed)
+{
+    Rng rng(seed, 0);
+    for (int k = 0; k < count; ++k)
+        scene.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
+}
+
+// The cluster seen from 0.03 away, filling the view.
+NffView near_the_cluster()
+{
+    NffView view;
+    view.from = point3(0.01f, 0.012f, 0.03f);
+    view.at = point3(0.0f);
+    return view;
+}
+
+}  // namespace
+
 TEST_CASE("a dense cluster beside one far sphere costs every structure no more than brute force, the BVH under a tenth", "[structures]")
 {
     // 100,000 spheres of radius 2e-4 in a box 0.01 across, and one sphere 1000 away. A margin of
     // 1e-5 of the scene's extent would be 0.01, wider than the cluster: no cell or node could sort
     // it apart, and every structure would test about twice brute force's objects.
     LitScene cluster = with_material();
-    Rng rng(43, 0);
-    for (int k = 0; k < 100000; ++k)
-        cluster.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
+    add_cluster(cluster, 100000, 43);
     cluster.add_sphere({{1000, 0, 0}, 1}, 0);
     NffView view;
     view.from = point3(0.004f, 0.006f, 0.025f);
@@ -447,14 +466,9 @@ TEST_CASE("a cluster 0.01 across beside one sphere 1e4 away (ratio 1e6) costs ev
     // cluster's width, and the hashed grid and the hierarchy of grids tested 1.2 and 1.06 times brute
     // force's objects on these rays.
     LitScene cluster = with_material();
-    Rng rng(45, 0);
-    for (int k = 0; k < 20000; ++k)
-        cluster.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
+    add_cluster(cluster, 20000, 45);
     cluster.add_sphere({{1e4f, 0, 0}, 0.01f}, 0);
-    NffView view;
-    view.from = point3(0.01f, 0.012f, 0.03f);
-    view.at = point3(0.0f);
-    check("a cluster 0.01 across beside a sphere at x = 1e4", cluster, view, 40,
+    check("a cluster 0.01 across beside a sphere at x = 1e4", cluster, near_the_cluster(), 40,
           [](const std::string&) { return WorkBound{1.0, 0.0}; });
 }
 
@@ -464,13 +478,8 @@ TEST_CASE("a cluster 0.01 across in the plane of a triangle 1e6 across costs eve
     // tested 1.3 times brute force's objects on these rays.
     LitScene plane = with_material();
     plane.add_triangle({{-5e5f, 0, 5e5f}, {5e5f, 0, 5e5f}, {0, 0, -5e5f}}, 0);
-    Rng rng(46, 0);
-    for (int k = 0; k < 20000; ++k)
-        plane.add_sphere({point3(drawn(rng, vec3(-0.005f), vec3(0.01f))), 2e-4f}, 0);
-    NffView view;
-    view.from = point3(0.01f, 0.012f, 0.03f);
-    view.at = point3(0.0f);
-    check("a cluster 0.01 across in the plane of a triangle 1e6 across", plane, view, 40,
+    add_cluster(plane, 20000, 46);
+    check("a cluster 0.01 across in the plane of a triangle 1e6 across", plane, near_the_cluster(), 40,
           [](const std::string&) { return WorkBound{1.0, 0.0}; });
 }
 
