@@ -236,6 +236,13 @@ foreach(file IN LISTS solved_files)
     message(FATAL_ERROR "SOLVED: exercises/${file} lacks the solution's code ('${first_return}'), or the Classroom stubs differ from it")
   endif()
 endforeach()
+# The lessons' "Before you start" lines keep only the unsolved chapters' exercises.
+file(STRINGS "${out}/chapters/04_shadow_feelers/README.md" before_04 REGEX "Before you start")
+file(STRINGS "${out}/chapters/08_mailboxing/README.md" before_08 REGEX "Before you start")
+if(before_04 OR NOT before_08 MATCHES "run your 07\\.1, 07\\.2, 07\\.3, 07\\.4, 07\\.5 and 07\\.6\\. <!--")
+  message(FATAL_ERROR "SOLVED=01;...;06: chapter 04's lesson should have no 'Before you start' line (all its earlier "
+    "exercises are given) and chapter 08's should list 07.1-07.6 alone, not\n${before_04}\n${before_08}")
+endif()
 file(READ "${out}/CMakePresets.json" presets)
 file(READ "${out}/.github/workflows/classroom.yml" workflow)
 if(NOT presets MATCHES "\"RT_GRADE_CHAPTERS\": \"07;08;09;10\"" OR NOT workflow MATCHES "RT_GRADE_CHAPTERS: \"07;08;09;10\"")
