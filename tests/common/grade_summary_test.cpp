@@ -1,5 +1,6 @@
 // The grade as a student and an instructor read it (tests/grader/summary.hpp): what stands for
 // many cases is one line, and no point is lost or gained on the way.
+#include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
 
 #include "tests/grader/catch.hpp"
@@ -8,6 +9,8 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <sstream>
+#include <string>
 
 namespace {
 
@@ -76,6 +79,20 @@ TEST_CASE("a lettered case waiting for a stub says what it is: A the whole struc
                              "which is still the handed-out stub");
     CHECK(summary[2].name == "07.P (the chapter's figure against the reference) cannot be graded yet: it runs 07.3 "
                              "and 07.4, which are still the handed-out stubs");
+}
+
+TEST_CASE("an untouched chapter's points table still shows what each exercise is worth", "[grader]")
+{
+    const std::vector<CaseResult> cases = {graded("07.1", 2, false, "07.1"), graded("07.1", 3, false, "07.1"),
+                                           graded("07.2", 4, false, "07.2"), graded("07.P", 5, false, "07.1")};
+    std::ostringstream table;
+    rt::grader::print_points_table(table, rt::grader::summarize(cases), cases);
+    INFO(table.str());
+    CHECK(table.str().find("chapter 07             0 / 14") != std::string::npos);
+    CHECK(table.str().find("lost 14: chapter 07 is still the handed-out stubs") != std::string::npos);
+    CHECK(table.str().find("07.1                0 / 5") != std::string::npos);
+    CHECK(table.str().find("07.2                0 / 4") != std::string::npos);
+    CHECK(table.str().find("07.P                0 / 5") != std::string::npos);
 }
 
 TEST_CASE("a chapter that did not compile is one line with the compiler's errors, worth all its cases", "[grader]")

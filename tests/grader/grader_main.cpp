@@ -450,7 +450,7 @@ int main(int argc, char* argv[])
         failed = session.run();
     }
 
-    print_points_table(std::cout, summarize(results));
+    print_points_table(std::cout, summarize(results), results);
     if (expect.empty())
         return failed;
     if (!check_expectation(std::cout, results, expect))

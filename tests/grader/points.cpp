@@ -110,19 +110,32 @@ void print_case(std::ostream& out, const CaseResult& r)
         out << "          " << line << '\n';
 }
 
-void print_points_table(std::ostream& out, const std::vector<CaseResult>& results)
+void print_points_table(std::ostream& out, const std::vector<CaseResult>& results, const std::vector<CaseResult>& cases)
 {
-    // number -> (score, max), ordered; chapter totals alongside.
+    // number -> (score, max), ordered; chapter totals alongside. An untouched chapter's one line
+    // is split into its exercises again where the cases are at hand, and said once above them.
     std::map<std::string, std::pair<int, int>> by_exercise, by_chapter;
+    std::map<std::string, std::string> untouched;  // chapter -> its line's words
     for (const CaseResult& r : results) {
-        by_exercise[r.number].first += r.score;
-        by_exercise[r.number].second += r.max_score;
         by_chapter[chapter_of(r)].first += r.score;
         by_chapter[chapter_of(r)].second += r.max_score;
+        const bool split = r.status == CaseStatus::untouched &&
+                           std::any_of(cases.begin(), cases.end(), [&](const CaseResult& c) { return chapter_of(c) == r.number; });
+        if (!split) {
+            by_exercise[r.number].first += r.score;
+            by_exercise[r.number].second += r.max_score;
+            continue;
+        }
+        untouched[r.number] = "lost " + std::to_string(r.max_score) + ": " + r.name;
+        for (const CaseResult& c : cases)
+            if (chapter_of(c) == r.number)
+                by_exercise[c.number].second += c.max_score;
     }
     out << "\nPoints\n";
     for (const auto& [chapter, total] : by_chapter) {
         out << "  chapter " << chapter << std::setw(14) << total.first << " / " << total.second << '\n';
+        if (untouched.count(chapter))
+            out << "    " << untouched[chapter] << '\n';
         for (const auto& [number, points] : by_exercise) {
             if (number.compare(0, 2, chapter) != 0)
                 continue;

@@ -53,7 +53,10 @@ constexpr std::size_t case_output_lines = 32;
 void print_case(std::ostream& out, const CaseResult& result);
 
 // Points per exercise and per chapter, and the failed cases by name.
-void print_points_table(std::ostream& out, const std::vector<CaseResult>& results);
+// With `cases` (the results before summarize), a chapter summed into one untouched line still shows
+// each exercise's points, so a student sees how the chapter's points split.
+void print_points_table(std::ostream& out, const std::vector<CaseResult>& results,
+                        const std::vector<CaseResult>& cases = {});
 
 // Text safe inside XML or HTML: & < > " escaped.
 std::string escape_xml(const std::string& s);
