@@ -4,6 +4,7 @@
 # the grader's results list them per case.
 #   cmake -D NN=07 -D LESSON=<chapters/07_uniform_grid/README.md> -D GRADER=<grade_07_traced>
 #         -D RESULTS=<file> -P earlier_exercises.cmake
+include("${CMAKE_CURRENT_LIST_DIR}/earlier_line.cmake")
 file(REMOVE "${RESULTS}")
 execute_process(COMMAND "${GRADER}" --results "${RESULTS}" OUTPUT_QUIET ERROR_QUIET)
 # The results: a line a case, its fields split by tabs; the sixth lists the exercises that ran.
@@ -28,22 +29,9 @@ foreach(line IN LISTS lines)
 endforeach()
 list(REMOVE_DUPLICATES earlier)
 list(SORT earlier COMPARE NATURAL)
-# "01.1, 02.2 and 02.5"
 list(LENGTH earlier count)
-set(words "")
-if(count GREATER 0)
-  math(EXPR last "${count} - 1")
-  list(GET earlier ${last} final)
-  list(REMOVE_AT earlier ${last})
-  string(JOIN ", " words ${earlier})
-  if(words)
-    set(words "${words} and ${final}")
-  else()
-    set(words "${final}")
-  endif()
-endif()
+rt_earlier_line(expected ${earlier})
 file(STRINGS "${LESSON}" marked REGEX "<!-- earlier exercises -->")
-set(expected "**Before you start:** this chapter's graded cases also run your ${words}. <!-- earlier exercises -->")
 if(count EQUAL 0)
   if(marked)
     message(FATAL_ERROR "${LESSON}: its cases run no earlier exercise, so its line '${marked}' should go")
@@ -52,7 +40,7 @@ if(count EQUAL 0)
   return()
 endif()
 if(NOT marked STREQUAL expected)
-  message(FATAL_ERROR "${LESSON}: its cases run ${words} of the earlier chapters; the line under its title should read\n"
+  message(FATAL_ERROR "${LESSON}: its cases run ${earlier} of the earlier chapters; the line under its title should read\n"
     "${expected}\nnot\n${marked}")
 endif()
-message(STATUS "chapter ${NN}: its ${cases} cases run ${words}, as its lesson says")
+message(STATUS "chapter ${NN}: its ${cases} cases run ${earlier}, as its lesson says")
