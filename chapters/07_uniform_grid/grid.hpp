@@ -167,7 +167,8 @@ inline bool inside(const Bounds& b, const Bounds& in)
 // whole scene's box, reach_widths of its width around it) for the reach, so a ray that starts in the
 // wide box is covered for those objects; it is covered for the bulk's too when it passes the reach
 // farther from them than the rounding its hits there would carry (covers). Every structure of chapters
-// 07-10 grows its objects' boxes by these, and answers a ray they do not cover with brute force. The
+// 07-10 grows its objects' boxes by these, and answers a ray they do not cover with brute force
+// (MarginedAccelerator, below). The
 // default reaches everywhere: the margins of a grid built by hand (the tests') are never asked.
 struct Margins {
     Bounds reach{point3(-infinity), point3(infinity)};
@@ -262,6 +263,36 @@ inline Margins margins_of(const Objects& objects)
         return {Bounds{point3(0.0f), point3(0.0f)}, Bounds{point3(0.0f), point3(0.0f)}};
     return {reach_around(bulk), reach_around(all)};
 }
+
+// The seam every structure of chapters 07-10 answers through: a ray its margins cover (Margins::covers)
+// gets the structure's own answer, any other ray brute force's, so no structure can forget the rays
+// its margins promise nothing for. A structure sets margins_ at its build and gives closest_covered
+// and any_covered; one that refuses more rays (the hierarchy of grids) says so in answers.
+class MarginedAccelerator : public Accelerator {
+public:
+    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const final
+    {
+        return answers(ray, range) ? closest_covered(ray, range, objects, hit)
+                                   : brute_force().closest(ray, range, objects, hit);
+    }
+
+    bool any(const Ray& ray, Interval range, const Objects& objects) const final
+    {
+        return answers(ray, range) ? any_covered(ray, range, objects) : brute_force().any(ray, range, objects);
+    }
+
+    const Margins& margins() const { return margins_; }
+
+protected:
+    MarginedAccelerator() = default;  // margins that reach everywhere: the tests' grids built by hand
+    explicit MarginedAccelerator(const Margins& margins) : margins_(margins) {}
+
+    virtual bool answers(const Ray& ray, Interval range) const { return margins_.covers(ray, range); }
+    virtual bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const = 0;
+    virtual bool any_covered(const Ray& ray, Interval range, const Objects& objects) const = 0;
+
+    Margins margins_;
+};
 
 // The rounding of a grid's own cell decisions on each axis, to add to each object's margin where it
 // is listed: 07.2's boundary i is where float's (p - min) / s reaches i, and the walk's boundary
@@ -564,19 +595,24 @@ inline void report_grid(std::ostream& out, const GridStats& s)
         << "build_seconds=" << s.build_seconds << '\n';
 }
 
-class UniformGrid final : public Accelerator {
+class UniformGrid final : public MarginedAccelerator {
 public:
     UniformGrid(const Objects& objects, float lambda)
-        : margins_(margins_of(objects)), grid_(build_grid(objects, margins_, lambda, &stats_))
+        : MarginedAccelerator(margins_of(objects)), grid_(build_grid(objects, margins_, lambda, &stats_))
     {
     }
     // A grid built by other means (the tests build small ones by hand): its margins reach everywhere.
     explicit UniformGrid(Grid grid) : grid_(std::move(grid)) {}
 
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    std::size_t bytes() const override { return stats_.bytes; }
+    void report(std::ostream& out) const override { report_grid(out, stats_); }
+
+    const Grid& grid() const { return grid_; }
+    const GridStats& stats() const { return stats_; }
+
+private:
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        if (!margins_.covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach
         GridWalk walk = start_walk(grid_.shape, ray, range);
         const auto query = [&](const GridWalk& w, ObjectHit& best) {
             return closest_in_cell(grid_, w, ray, range, objects, best);
@@ -584,10 +620,8 @@ public:
         return grid_closest(grid_.shape, walk, ray, range, objects, hit, query, next_cell);
     }
 
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
     {
-        if (!margins_.covers(ray, range))
-            return brute_force().any(ray, range, objects);
         GridWalk walk = start_walk(grid_.shape, ray, range);
         ObjectHit hit;
         const auto any_in = [&](const GridWalk& w) {
@@ -596,16 +630,7 @@ public:
         return grid_any(grid_.shape, walk, ray, range, objects, any_in, next_cell);
     }
 
-    std::size_t bytes() const override { return stats_.bytes; }
-    void report(std::ostream& out) const override { report_grid(out, stats_); }
-
-    const Grid& grid() const { return grid_; }
-    const GridStats& stats() const { return stats_; }
-    const Margins& margins() const { return margins_; }
-
-private:
     GridStats stats_;
-    Margins margins_;
     Grid grid_;
 };
 

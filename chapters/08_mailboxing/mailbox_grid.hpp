@@ -20,43 +20,11 @@
 
 namespace rt {
 
-class MailboxGrid final : public Accelerator {
+class MailboxGrid final : public MarginedAccelerator {
 public:
-    MailboxGrid(const Objects& objects, float lambda) : grid_(objects, lambda), objects_(objects.size()) {}
+    MailboxGrid(const Objects& objects, float lambda) : MailboxGrid(UniformGrid(objects, lambda), objects.size()) {}
     // A grid built by other means (the tests build small ones by hand) over `objects` objects.
-    MailboxGrid(Grid grid, int objects) : grid_(std::move(grid)), objects_(objects) {}
-
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
-    {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;  // before next_signature: a ray that meets no cell takes no signature
-        Mailboxes& m = mailboxes();
-        const std::uint32_t signature = next_signature(m);
-        const auto query = [&](const GridWalk& w, ObjectHit& best) {
-            return closest_in_cell_mailboxed(g, w, m, signature, ray, range, objects, best);
-        };
-        return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);  // (grid.hpp)
-    }
-
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
-    {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;
-        Mailboxes& m = mailboxes();
-        const std::uint32_t signature = next_signature(m);
-        ObjectHit hit;
-        const auto ask = [&](int k) { return mailboxed_intersect(m, signature, objects, k, ray, range, hit); };
-        const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, ask); };
-        return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
-    }
+    MailboxGrid(Grid grid, int objects) : MailboxGrid(UniformGrid(std::move(grid)), objects) {}
 
     std::size_t bytes() const override { return grid_.bytes(); }
     void report(std::ostream& out) const override
@@ -82,6 +50,40 @@ public:
     }
 
 private:
+    // The grid's margins: it answers the rays they cover, brute force the others.
+    MailboxGrid(UniformGrid grid, int objects)
+        : MarginedAccelerator(grid.margins()), grid_(std::move(grid)), objects_(objects)
+    {
+    }
+
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        const Grid& g = grid_.grid();
+        GridWalk walk = start_walk(g.shape, ray, range);
+        if (walk.missed)
+            return false;  // before next_signature: a ray that meets no cell takes no signature
+        Mailboxes& m = mailboxes();
+        const std::uint32_t signature = next_signature(m);
+        const auto query = [&](const GridWalk& w, ObjectHit& best) {
+            return closest_in_cell_mailboxed(g, w, m, signature, ray, range, objects, best);
+        };
+        return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);  // (grid.hpp)
+    }
+
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        const Grid& g = grid_.grid();
+        GridWalk walk = start_walk(g.shape, ray, range);
+        if (walk.missed)
+            return false;
+        Mailboxes& m = mailboxes();
+        const std::uint32_t signature = next_signature(m);
+        ObjectHit hit;
+        const auto ask = [&](int k) { return mailboxed_intersect(m, signature, objects, k, ray, range, hit); };
+        const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, ask); };
+        return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
+    }
+
     struct ThreadMailboxes {
         std::uint64_t owner = 0;
         Mailboxes set;

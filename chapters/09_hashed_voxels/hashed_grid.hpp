@@ -114,52 +114,11 @@ inline std::size_t dense_build_bytes(long long objects, long long references, lo
                                     static_cast<double>(references) * sizeof(std::uint32_t));
 }
 
-class HashedGrid final : public Accelerator {
+class HashedGrid final : public MarginedAccelerator {
 public:
     // lambda cells per object, up to max_hashed_cells_per_axis; table_size 0 takes the least
     // prime at least twice the occupied cells. Throws InputError past the limits.
     HashedGrid(const Objects& objects, float lambda, std::uint32_t table_size = 0) { build(objects, lambda, table_size); }
-
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        GridWalk walk = start_walk(shape_, ray, range);
-        if (walk.missed)
-            return false;
-        Residue r = residue_of(walk);
-        const auto query = [&](const GridWalk& w, ObjectHit& best) {
-            return closest_in_hashed_cell(table_, bits_, w, r.r, ray, range, objects, best);
-        };
-        // Chapter 07's walk (grid.hpp), each step keeping the residue along.
-        return grid_closest(shape_, walk, ray, range, objects, hit, query, [&](GridWalk& w) { return step(w, r); });
-    }
-
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        GridWalk walk = start_walk(shape_, ray, range);
-        if (walk.missed)
-            return false;
-        Residue r = residue_of(walk);
-        ObjectHit hit;
-        const auto any_in = [&](const GridWalk& w) {
-            if (!occupied(bits_, w.p)) {
-                count(Counter::table_lookups_skipped);
-                return false;
-            }
-            count(Counter::table_lookups);
-            const HashedCell* cell = find_cell(table_, w.p, r.r);
-            if (!cell)
-                return false;
-            for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
-                if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
-                    return true;
-            return false;
-        };
-        return grid_any(shape_, walk, ray, range, objects, any_in, [&](GridWalk& w) { return step(w, r); });
-    }
 
     std::size_t bytes() const override { return stats_.bytes; }
     const HashedGridStats& stats() const { return stats_; }
@@ -187,6 +146,43 @@ public:
     const GridShape& shape() const { return shape_; }
 
 private:
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        GridWalk walk = start_walk(shape_, ray, range);
+        if (walk.missed)
+            return false;
+        Residue r = residue_of(walk);
+        const auto query = [&](const GridWalk& w, ObjectHit& best) {
+            return closest_in_hashed_cell(table_, bits_, w, r.r, ray, range, objects, best);
+        };
+        // Chapter 07's walk (grid.hpp), each step keeping the residue along.
+        return grid_closest(shape_, walk, ray, range, objects, hit, query, [&](GridWalk& w) { return step(w, r); });
+    }
+
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        GridWalk walk = start_walk(shape_, ray, range);
+        if (walk.missed)
+            return false;
+        Residue r = residue_of(walk);
+        ObjectHit hit;
+        const auto any_in = [&](const GridWalk& w) {
+            if (!occupied(bits_, w.p)) {
+                count(Counter::table_lookups_skipped);
+                return false;
+            }
+            count(Counter::table_lookups);
+            const HashedCell* cell = find_cell(table_, w.p, r.r);
+            if (!cell)
+                return false;
+            for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
+                if (objects.intersect(static_cast<int>(table_.object_index[i]), ray, range, hit))
+                    return true;
+            return false;
+        };
+        return grid_any(shape_, walk, ray, range, objects, any_in, [&](GridWalk& w) { return step(w, r); });
+    }
+
     // The walk's residue r = p mod M, and what a step along each axis adds to it (09.1).
     struct Residue {
         std::uint32_t r;
@@ -475,7 +471,6 @@ private:
         return occupied;
     }
 
-    Margins margins_;
     GridShape shape_;
     HashTable table_;
     OccupancyBits bits_;

@@ -39,7 +39,7 @@ struct BvhStats {
     double build_seconds = 0.0;
 };
 
-class BvhAccel final : public Accelerator {
+class BvhAccel final : public MarginedAccelerator {
 public:
     BvhAccel(const Objects& objects, const BvhSettings& settings = {}) : settings_(settings)
     {
@@ -50,21 +50,6 @@ public:
             throw InputError("the BVH's bins must be between 2 and " + std::to_string(max_bins) + ", got " +
                              std::to_string(settings.bins));
         build(objects);
-    }
-
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/false, hit);
-    }
-
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        ObjectHit hit;
-        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/true, hit);
     }
 
     std::size_t bytes() const override { return stats_.bytes; }
@@ -78,9 +63,19 @@ public:
     }
     const BvhStats& stats() const { return stats_; }
     const Bvh& bvh() const { return bvh_; }
-    const Margins& margins() const { return margins_; }
 
 private:
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/false, hit);
+    }
+
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        ObjectHit hit;
+        return bvh_query(bvh_, ray, range, objects, /*any_hit=*/true, hit);
+    }
+
     // The most objects a leaf can count (BvhNode::count is 16 bits): a larger group that 10.3 would
     // keep whole (or whose boxes all share one centre) is halved instead.
     static constexpr int max_leaf = std::numeric_limits<std::uint16_t>::max();
@@ -260,7 +255,6 @@ private:
     }
 
     BvhSettings settings_;
-    Margins margins_;
     Bvh bvh_;
     BvhStats stats_;
     std::vector<Bounds> boxes_;

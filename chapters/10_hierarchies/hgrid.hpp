@@ -32,7 +32,7 @@ struct HGridStats {
     double build_seconds = 0.0;
 };
 
-class HGridAccel final : public Accelerator {
+class HGridAccel final : public MarginedAccelerator {
 public:
     HGridAccel(const Objects& objects, const HGridSettings& settings = {}) : settings_(settings)
     {
@@ -58,25 +58,6 @@ public:
         stats_.build_seconds = timer.seconds();
     }
 
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
-    {
-        // Outside the margins' reach (grid.hpp), or cells finer than t's steps: brute force's answer.
-        if (!margins_.covers(ray, range) || cells_finer_than_t(ray, range))
-            return brute_force().closest(ray, range, objects, hit);
-        ObjectHit best;
-        if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
-            return false;
-        hit = best;
-        return true;
-    }
-
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
-    {
-        if (!margins_.covers(ray, range) || cells_finer_than_t(ray, range))
-            return brute_force().any(ray, range, objects);
-        return any_in(0, ray, range, range, objects);
-    }
-
     std::size_t bytes() const override { return stats_.bytes; }
     void report(std::ostream& out) const override
     {
@@ -96,6 +77,27 @@ public:
     static constexpr int max_hgrid_depth = 8;
 
 private:
+    // Besides the rays the margins leave (grid.hpp), those along which the finest cells are narrower
+    // than t's steps: both get brute force's answer.
+    bool answers(const Ray& ray, Interval range) const override
+    {
+        return margins_.covers(ray, range) && !cells_finer_than_t(ray, range);
+    }
+
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        ObjectHit best;
+        if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
+            return false;
+        hit = best;
+        return true;
+    }
+
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        return any_in(0, ray, range, range, objects);
+    }
+
     // Gives each crowded cell of grid g (above the depth limit) a grid of its own, depth first.
     void subdivide(const Objects& objects, int g, int depth)
     {
@@ -203,7 +205,6 @@ private:
     HGridSettings settings_;
     HGrid h_;
     HGridStats stats_;
-    Margins margins_;
     long long cells_ = 0, references_ = 0;  // over every level, for the budgets
 };
 

@@ -348,7 +348,7 @@ private:
     int top_ = 0;
 };
 
-class WideBvhAccel final : public Accelerator {
+class WideBvhAccel final : public MarginedAccelerator {
 public:
     explicit WideBvhAccel(const Objects& objects, const BvhSettings& settings = {})
     {
@@ -369,19 +369,6 @@ public:
         build_seconds_ = timer.seconds();
     }
 
-    bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        return ready(ray) && WideQuery<QueryKind::closest>(tree_, ray, range, objects).run(hit);
-    }
-    bool any(const Ray& ray, Interval range, const Objects& objects) const override
-    {
-        if (!margins_.covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        ObjectHit hit;
-        return ready(ray) && WideQuery<QueryKind::any>(tree_, ray, range, objects).run(hit);
-    }
     std::size_t bytes() const override { return bytes_; }
     void report(std::ostream& out) const override
     {
@@ -392,6 +379,17 @@ public:
     const WideBvh& tree() const { return tree_; }
 
 private:
+    bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
+    {
+        return ready(ray) && WideQuery<QueryKind::closest>(tree_, ray, range, objects).run(hit);
+    }
+
+    bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
+    {
+        ObjectHit hit;
+        return ready(ray) && WideQuery<QueryKind::any>(tree_, ray, range, objects).run(hit);
+    }
+
     // Each leaf of triangles only, its triangles copied four to a block (four_triangles.hpp), the
     // blocks of a leaf one after another, its node pointed at them; leaves holding another kind keep
     // their objects in object_index.
@@ -480,7 +478,6 @@ private:
     // A tree with something in it, and a ray the slab test can take (common/bounds.hpp).
     bool ready(const Ray& ray) const { return !tree_.nodes.empty() && valid_ray(ray); }
 
-    Margins margins_;
     WideBvh tree_;
     std::size_t bytes_ = 0;
     double build_seconds_ = 0.0;
