@@ -483,10 +483,18 @@ TEST_CASE("a cluster 0.01 across in the plane of a triangle 1e6 across costs eve
           [](const std::string&) { return WorkBound{1.0, 0.0}; });
 }
 
-TEST_CASE("one flat triangle 2e6 across over 20,000 triangles 5e-3 across costs the hierarchy of grids no more than brute force", "[structures]")
+TEST_CASE("one flat triangle 2e6 across over 20,000 triangles 5e-3 across costs every structure but the two grids without mailboxes no more than brute force", "[structures]")
 {
     // The hierarchy of grids once tested 4.3 times brute force's objects here (the margins of the
-    // small triangles were 2^-20 of 1e6, about 0.95).
+    // small triangles were 2^-20 of 1e6, about 0.95). The grid and the hashed grid are held to
+    // the default bound only: their cells are 7,000 wide, a boundary runs through the cluster at x = 0
+    // and z = 0, and 07.2 and 07.4 place boundaries in float, so each object within 4 roundings of 2e6
+    // (0.48) of one is listed on both sides, and a ray crossing both tests it twice. On these rays
+    // (spread wide, many miss the cluster) they test 0.78 times brute force's objects; on the
+    // benchmark's 64 x 64 primary rays of this view (--scene), 2.05 times, and the hierarchy of grids,
+    // whose root grid is the plain one, 1.33 times. The grid
+    // with mailboxes tests it once (chapter 08's lesson); sorting it apart would take 07.2 and 07.4 in
+    // double (chapter 07's lesson, "The grid's own cells round too").
     LitScene huge = with_material();
     huge.add_triangle({{-1e6f, 0, 1e6f}, {1e6f, 0, 1e6f}, {0, 0, -1e6f}}, 0);
     for (int i = 0; i < 142; ++i)
@@ -497,8 +505,9 @@ TEST_CASE("one flat triangle 2e6 across over 20,000 triangles 5e-3 across costs 
     NffView view;
     view.from = point3(0.3f, 0.5f, 0.8f);
     view.at = point3(0.0f);
-    check("a triangle 2e6 across over 20,164 triangles 5e-3 across", huge, view, 40,
-          [](const std::string& structure) { return structure == "hgrid" ? WorkBound{1.0, 0.0} : WorkBound{}; });
+    check("a triangle 2e6 across over 20,164 triangles 5e-3 across", huge, view, 40, [](const std::string& structure) {
+        return structure == "grid" || structure == "hashed" ? WorkBound{} : WorkBound{1.0, 0.0};
+    });
 }
 
 TEST_CASE("an eye 5e5 times the scene's size away: every structure answers as brute force does", "[structures]")
