@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace rt::grader::agreement {
 
@@ -39,7 +40,35 @@ struct Build {
     std::string build_asks = {};
 };
 
-// `rays` seeded rays: half from the view's eye into its field of view, half from points in and
+struct SeededRay {
+    Ray ray;
+    Interval range;
+};
+
+// The k-th of a run of seeded rays (compare's, and 10.7's cost): even k from the view's eye into
+// its field of view, odd k from a point in and around the scene's `box` in any direction (some
+// parallel to a slab), with a range that sometimes ends early; nullopt for a direction of 0.
+inline std::optional<SeededRay> seeded_ray(Rng& rng, const NffView& view, const Bounds& box, int k)
+{
+    const auto u = [&] { return rng.next_float(); };
+    const vec3 e = box.extent();
+    Ray ray;
+    if (k % 2 == 0) {
+        const vec3 ahead = glm::normalize(view.at - view.from);
+        ray = {view.from, glm::normalize(ahead + 0.6f * vec3(2 * u() - 1, 2 * u() - 1, 2 * u() - 1))};
+    } else {
+        vec3 dir(2 * u() - 1, 2 * u() - 1, 2 * u() - 1);
+        if (u() < 0.1f)
+            dir[static_cast<int>(u() * 3)] = 0.0f;  // some rays parallel to a slab
+        if (dir == vec3(0.0f))
+            return std::nullopt;
+        ray = {box.min - 0.25f * e + 1.5f * e * vec3(u(), u(), u()), glm::normalize(dir)};
+    }
+    const Interval range{u() < 0.5f ? 0.0f : 1e-4f, u() < 0.2f ? glm::length(e) * u() : infinity};
+    return SeededRay{ray, range};
+}
+
+// `rays` seeded rays (seeded_ray): half from the view's eye into its field of view, half from points in and
 // around the scene's box in any direction, some with a range that ends early.
 inline void compare(const Build& build, const LitScene& scene, const NffView& view, float lambda, int rays, std::uint64_t seed, Disagreement& d)
 {
@@ -62,23 +91,13 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
     Bounds box;
     for (int k = 0; k < objects.size(); ++k)
         box.grow(objects.bounds(k));
-    const vec3 e = box.extent();
     Rng rng(seed, 3);
-    const auto u = [&] { return rng.next_float(); };
     for (int k = 0; k < rays; ++k) {
-        Ray ray;
-        if (k % 2 == 0) {
-            const vec3 ahead = glm::normalize(view.at - view.from);
-            ray = {view.from, glm::normalize(ahead + 0.6f * vec3(2 * u() - 1, 2 * u() - 1, 2 * u() - 1))};
-        } else {
-            vec3 dir(2 * u() - 1, 2 * u() - 1, 2 * u() - 1);
-            if (u() < 0.1f)
-                dir[static_cast<int>(u() * 3)] = 0.0f;  // some rays parallel to a slab
-            if (dir == vec3(0.0f))
-                continue;
-            ray = {box.min - 0.25f * e + 1.5f * e * vec3(u(), u(), u()), glm::normalize(dir)};
-        }
-        const Interval range{u() < 0.5f ? 0.0f : 1e-4f, u() < 0.2f ? glm::length(e) * u() : infinity};
+        const std::optional<SeededRay> seeded = seeded_ray(rng, view, box, k);
+        if (!seeded)
+            continue;
+        const Ray& ray = seeded->ray;
+        const Interval range = seeded->range;
         // Said only when the query crashes: then the diagnosis runs on this ray, as for a wrong answer.
         const WorkingOn on([&] {
             std::ostringstream s;
