@@ -40,11 +40,11 @@ void check_edge_trees()
     const Bounds dot{point3(1, 2, 3), point3(1.5f, 2, 3)};
     for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{300}, std::size_t{66000}}) {
         const std::vector<Bounds> boxes(n, dot);
-        const WorkingOn on([&] { return "build_bvh of " + std::to_string(n) + " boxes, all " + show(dot); });
+        const WorkingOn on([&] { return "build_bvh of " + std::to_string(n) + " copies of " + show(dot); });
         const Bvh tree = build_bvh(boxes);
         BvhStats shape;
         const std::string problem = bvh_problem(tree, boxes, shape);
-        INFO("build_bvh of " << n << " boxes, all " << show(dot) << ": " << (problem.empty() ? "a valid tree" : problem));
+        INFO("build_bvh of " << n << " copies of " << show(dot) << ": " << (problem.empty() ? "a valid tree" : problem));
         CHECK(problem.empty());
     }
 }
