@@ -128,7 +128,8 @@ inline void compare(const Build& build, const LitScene& scene, const NffView& vi
     }
 }
 
-inline void check_scene(const Build& build, const NffScene& nff, int rays_per_lambda)
+// Whether every ray agreed (a failed check otherwise, naming the first ray that differs).
+inline bool check_scene(const Build& build, const NffScene& nff, int rays_per_lambda)
 {
     const LitScene scene = lit_scene(nff);
     Disagreement d;
@@ -138,19 +139,23 @@ inline void check_scene(const Build& build, const NffScene& nff, int rays_per_la
     INFO(nff.name << " (" << objects_of(scene, lit_tests).size() << " objects): " << d.wrong << " of " << d.rays
          << " rays answered differently from brute force; the first: " << d.first << d.suspect);
     CHECK(d.wrong == 0);
+    return d.wrong == 0;
 }
 
 // check_scene on each scene file (*.nff) in `folder`: the kit's, RT_NFF_SCENES_DIR, in the chapters' tests.
-inline void check_scene_files(const Build& build, const std::string& folder, int rays_per_lambda)
+inline bool check_scene_files(const Build& build, const std::string& folder, int rays_per_lambda)
 {
+    bool agreed = true;
     for (const auto& entry : std::filesystem::directory_iterator(folder))
         if (entry.path().extension() == ".nff")
-            check_scene(build, read_nff(entry.path().string()), rays_per_lambda);
+            agreed = check_scene(build, read_nff(entry.path().string()), rays_per_lambda) && agreed;
+    return agreed;
 }
 
 // Twin triangles (every tie to the lower number), a floor 1e4 across under 200 spheres of radius
-// 1e-3 (the floor is in every cell of its layer), and that scene 1e5 from the origin.
-inline void check_hard_cases(const Build& build)
+// 1e-3 (the floor is in every cell of its layer), and that scene 1e5 from the origin. Whether every
+// ray agreed.
+inline bool check_hard_cases(const Build& build)
 {
     // Two copies of each triangle (object k and k + T): every tie goes to the lower number.
     LitScene twins;
@@ -172,6 +177,7 @@ inline void check_hard_cases(const Build& build)
         compare(build, twins, view, lambda, 1500, 40, d);
     INFO("twin triangles: " << d.wrong << " of " << d.rays << " rays answered differently; the first: " << d.first << d.suspect);
     CHECK(d.wrong == 0);
+    bool agreed = d.wrong == 0;
 
     // A floor 1e4 across under 200 spheres of radius 1e-3: the floor is in every cell of its layer.
     for (const float offset : {0.0f, 1e5f}) {
@@ -191,7 +197,9 @@ inline void check_hard_cases(const Build& build)
         INFO("a floor under tiny spheres, offset by " << offset << ": " << m.wrong << " of " << m.rays
              << " rays answered differently; the first: " << m.first << m.suspect);
         CHECK(m.wrong == 0);
+        agreed = agreed && m.wrong == 0;
     }
+    return agreed;
 }
 
 }  // namespace rt::grader::agreement

@@ -156,6 +156,10 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
                     out << "      lost " << r.max_score << ": " << r.name << '\n';
         }
     }
+    // An open exercise's measure, as the leaderboard ranks it.
+    for (const CaseResult& m : leaderboard_of(results))
+        out << "  " << m.measure << ": " << number_text(m.measured) << " (the reference: " << number_text(m.reference)
+            << "; lower is better, and the class leaderboard ranks it)\n";
 }
 
 bool append_gradebook_row(const std::string& path, const std::string& student, const std::vector<CaseResult>& results)
