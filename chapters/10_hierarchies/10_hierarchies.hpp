@@ -279,7 +279,7 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
 //  - Cheap (the score): the cost of a closest-hit ray is its nodes visited times
 //    sah_traversal_cost plus its objects tested times sah_intersect_cost (the SAH's own weights),
 //    counted through 10.4 on seeded rays over five of the kit's generated scenes (the lesson lists
-//    them). Your cost is the geometric mean over the scenes of your cost per ray over the
+//    them). So the gate also asks 10.4 to count as its own example above says. Your cost is the geometric mean over the scenes of your cost per ray over the
 //    reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2, one third; beyond
 //    2, none. It is what the class leaderboard ranks, lower first. Counts, never time.
 //  - Memory: a valid tree has at most 2 n - 1 nodes for n objects, 32 bytes each.

@@ -7,6 +7,7 @@
 #include "common/scenes/nff_generators.hpp"
 #include "tests/ch07/agreement.hpp"
 #include "tests/ch10/bvh_suspect.hpp"
+#include "tests/ch10/two_leaves.hpp"
 #include "tests/grader/measure.hpp"
 
 #include <cmath>
@@ -52,13 +53,34 @@ bool check_edge_trees()
     return valid;
 }
 
+// The instrument: 10.7's cost is counted through 10.4, so 10.4 must count as its contract's
+// example says (1 test, 3 nodes visited, for the ray along +x through two_leaves()).
+bool check_counting()
+{
+    ObjectHit hit;
+    reset_counters();
+    const bool found = bvh_query(two_leaves(), {{-3, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, two_objects(), false, hit);
+    const Counts counts = total_counts();
+    const auto tests = counts[static_cast<size_t>(Counter::intersection_tests)];
+    const auto nodes = counts[static_cast<size_t>(Counter::nodes_visited)];
+    INFO("10.7's cost is counted through your 10.4: on its contract's example (spheres at x = 1 and 5, a leaf each, the "
+         "ray from (-3, 0, 0) along +x) it found "
+         << (found ? show(hit) : "no hit") << " after " << tests << " tests and " << nodes
+         << " nodes visited; its contract says sphere 0 after 1 test and 3 nodes: start with 10.4's own cases");
+    CHECK(found);
+    CHECK(tests == 1);
+    CHECK(nodes == 3);
+    return found && tests == 1 && nodes == 3;
+}
+
 // The gate: 10.A's scenes and rays (fewer: a BVH ignores lambda), ties, a huge floor, far away.
 // Whether the tree passed it: every rule kept, every ray answered as brute force does.
 bool check_gate()
 {
     INFO("the gate of 10.7: a tree that breaks a rule or answers a ray differently from brute force scores 0 in every "
          "10.7 case");
-    bool passed = check_edge_trees();
+    bool passed = check_counting();
+    passed = check_edge_trees() && passed;
     passed = check_scene_files(open_build, RT_NFF_SCENES_DIR, 200) && passed;
     passed = check_scene(open_build, generated_scene(write_stadium, 2, "stadium 2"), 200) && passed;
     passed = check_scene(open_build, generated_scene(write_sticks, 1, "sticks 1"), 200) && passed;
