@@ -97,15 +97,15 @@ struct CostScene {
     double reference;  // the reference build's cost per ray
 };
 const CostScene cost_scenes[] = {
-    {"teapot in a stadium 4", write_stadium, 4, 3.9296},
-    {"sticks 3", write_sticks, 3, 13.9694},
-    {"sphereflake 3", write_sphereflake, 3, 1.2150},
-    {"mountain 5", write_mountain, 5, 1.6896},
-    {"tree 4", write_tree, 4, 1.2668},
+    {"teapot in a stadium 4", write_stadium, 4, 3.929626},
+    {"sticks 3", write_sticks, 3, 13.969360},
+    {"sphereflake 3", write_sphereflake, 3, 1.214966},
+    {"mountain 5", write_mountain, 5, 1.689636},
+    {"tree 4", write_tree, 4, 1.266846},
 };
 constexpr int cost_rays = 4096;  // seeded rays per scene (seeded_ray), closest hits
 
-// The cost per closest-hit ray of the tree `build` makes of a scene: nodes visited times
+// The cost per closest-hit ray of the tree built with `settings` over a scene: nodes visited times
 // sah_traversal_cost plus objects tested times sah_intersect_cost, over cost_rays seeded rays.
 double cost_per_ray(const CostScene& c, const BvhSettings& settings)
 {
@@ -159,7 +159,7 @@ void check_tier(double tier)
         return;
     std::string words;
     const double ratio = cost_ratio(words);
-    report_measure("10.7 cost", ratio, 1.0);
+    report_measure("10.7 cost", std::round(ratio * 1000.0) / 1000.0, 1.0);  // as the leaderboard shows it
     INFO("your tree's cost (nodes visited / 8 + objects tested, per closest-hit ray) is " << fixed(ratio, 3)
          << " times the reference's (the geometric mean over the scenes);" << words << "\nthis tier asks at most "
          << fixed(tier, 2) << " times");
@@ -192,9 +192,9 @@ TEST_CASE("10.7's stored reference costs are the reference build's", "[.][open_r
         BvhSettings binned, median, median1;
         median.split = median1.split = BvhSplit::median;
         median1.leaf_size = 1;
-        WARN(c.name << ": reference " << fixed(reference, 4) << ", given binned SAH " << fixed(cost_per_ray(c, binned), 4)
+        WARN(c.name << ": reference " << fixed(reference, 6) << ", given binned SAH " << fixed(cost_per_ray(c, binned), 4)
                     << ", median (leaf 4) " << fixed(cost_per_ray(c, median), 4) << ", median (leaf 1) "
                     << fixed(cost_per_ray(c, median1), 4));
-        CHECK(fixed(reference, 4) == fixed(c.reference, 4));
+        CHECK(fixed(reference, 6) == fixed(c.reference, 6));
     }
 }
