@@ -279,9 +279,10 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
 //  - Cheap (the score): the cost of a closest-hit ray is its nodes visited times
 //    sah_traversal_cost plus its objects tested times sah_intersect_cost (the SAH's own weights),
 //    counted through 10.4 on seeded rays over five of the kit's generated scenes (the lesson lists
-//    them). So the gate also asks 10.4 to count as its own example above says. Your cost is the geometric mean over the scenes of your cost per ray over the
-//    reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2, one third; beyond
-//    2, none. It is what the class leaderboard ranks, lower first. Counts, never time.
+//    them), so the gate also asks 10.4 to count as its own example above says. Your cost is the
+//    geometric mean over the scenes of your cost per ray over the reference's: at most 1.02, full
+//    points; at most 1.5, two thirds; at most 2, one third; beyond 2, none. It is what the class
+//    leaderboard ranks, lower first (to three decimals). Counts, never time.
 //  - Memory: a valid tree has at most 2 n - 1 nodes for n objects, 32 bytes each.
 // Example: two objects make a root over both and a leaf for each (3 nodes; node 2 is the second
 // child), or one leaf of both (1 node, first 0, count 2).

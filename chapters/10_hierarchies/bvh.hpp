@@ -49,21 +49,25 @@ inline std::string bvh_problem(const Bvh& bvh, const std::vector<Bounds>& boxes,
     const std::size_t n = boxes.size(), nodes = bvh.nodes.size();
     shape = {};
     if (bvh.object_index.size() != n)
-        return "object_index lists " + std::to_string(bvh.object_index.size()) + " objects, the scene has " + std::to_string(n);
+        return "object_index lists " + std::to_string(bvh.object_index.size()) + " objects, the scene has " +
+               std::to_string(n);
     if (n == 0)
         return nodes == 0 ? "" : "no objects, yet " + std::to_string(nodes) + " nodes";
     if (nodes == 0)
         return "no nodes for " + std::to_string(n) + " objects";
     if (nodes > 2 * n - 1)
-        return std::to_string(nodes) + " nodes for " + std::to_string(n) + " objects: a tree of them has at most 2 n - 1";
+        return std::to_string(nodes) + " nodes for " + std::to_string(n) +
+               " objects: a tree of them has at most 2 n - 1";
     const auto holds = [](const Bounds& outer, const Bounds& inner) {
-        return glm::all(glm::lessThanEqual(outer.min, inner.min)) && glm::all(glm::greaterThanEqual(outer.max, inner.max));
+        return glm::all(glm::lessThanEqual(outer.min, inner.min)) &&
+               glm::all(glm::greaterThanEqual(outer.max, inner.max));
     };
     const auto node_words = [](std::size_t k) { return "node " + std::to_string(k); };
     const auto describe_box = [](const Bounds& b) {
         std::ostringstream s;
         s.precision(9);
-        s << '(' << b.min.x << ", " << b.min.y << ", " << b.min.z << ") to (" << b.max.x << ", " << b.max.y << ", " << b.max.z << ')';
+        s << '(' << b.min.x << ", " << b.min.y << ", " << b.min.z << ") to (" << b.max.x << ", " << b.max.y << ", "
+          << b.max.z << ')';
         return s.str();
     };
     std::vector<char> listed(n, 0), reached(nodes, 0);
@@ -86,13 +90,15 @@ inline std::string bvh_problem(const Bvh& bvh, const std::vector<Bounds>& boxes,
             ++shape.leaves;
             if (std::size_t{node.first} + node.count > n)
                 return node_words(v.node) + ", a leaf, lists object_index[" + std::to_string(node.first) + " .. " +
-                       std::to_string(std::size_t{node.first} + node.count) + "), past its end (" + std::to_string(n) + ")";
+                       std::to_string(std::size_t{node.first} + node.count) + "), past its end (" +
+                       std::to_string(n) + ")";
             for (std::uint32_t j = node.first; j < node.first + node.count; ++j) {
                 const std::uint32_t k = bvh.object_index[j];
                 if (k >= n)
                     return "object_index[" + std::to_string(j) + "] is " + std::to_string(k) + ", not an object";
                 if (listed[k]++)
-                    return "object " + std::to_string(k) + " is listed twice (the second time in " + node_words(v.node) + ")";
+                    return "object " + std::to_string(k) + " is listed twice (the second time in " +
+                           node_words(v.node) + ")";
                 if (!holds(node.bounds(), boxes[k]))
                     return node_words(v.node) + "'s box " + describe_box(node.bounds()) + " does not hold object " +
                            std::to_string(k) + "'s box " + describe_box(boxes[k]);
@@ -104,7 +110,8 @@ inline std::string bvh_problem(const Bvh& bvh, const std::vector<Bounds>& boxes,
             return node_words(v.node) + ", an inner node, has axis " + std::to_string(node.axis) + ", not 0, 1 or 2";
         if (first >= nodes || second <= first || second >= nodes)
             return node_words(v.node) + ", an inner node, has children " + std::to_string(first) + " and " +
-                   std::to_string(second) + ": the second must come after the first, within the " + std::to_string(nodes) + " nodes";
+                   std::to_string(second) + ": the second must come after the first, within the " +
+                   std::to_string(nodes) + " nodes";
         for (const std::uint32_t child : {first, second})
             if (!holds(node.bounds(), bvh.nodes[child].bounds()))
                 return node_words(v.node) + "'s box " + describe_box(node.bounds()) + " does not hold its child " +

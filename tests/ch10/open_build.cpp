@@ -46,7 +46,8 @@ bool check_edge_trees()
         const Bvh tree = build_bvh(boxes);
         BvhStats shape;
         const std::string problem = bvh_problem(tree, boxes, shape);
-        INFO("build_bvh of " << n << " copies of " << show(dot) << ": " << (problem.empty() ? "a valid tree" : problem));
+        INFO("build_bvh of " << n << " copies of " << show(dot) << ": "
+                             << (problem.empty() ? "a valid tree" : problem));
         CHECK(problem.empty());
         valid = valid && problem.empty();
     }
