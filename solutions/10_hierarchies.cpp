@@ -23,6 +23,12 @@
 #include "common/stats.hpp"
 
 #include <cmath>
+// SOLUTION BEGIN
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <utility>
+// SOLUTION END
 
 namespace rt {
 
@@ -242,6 +248,92 @@ FourHits hit_four_triangles(const FourTriangles& g, const RayFrame& f, Interval 
     return hits;
     // SOLUTION END
     // STUB return stub("10.6", FourHits::not_tested());
+}
+
+Bvh build_bvh(const std::vector<Bounds>& boxes)
+{
+    // EXERCISE 10.7 (open): your own build of the BVH
+    // Return a tree of the objects whose boxes are `boxes` (already grown by their margins), in the
+    // chapter's layout (BvhNode, Bvh): every object in exactly one leaf, each box holding what is
+    // below it, a node's first child right after it. Any method; the grader checks the tree's
+    // answers against brute force, then measures its nodes visited and objects tested per ray
+    // against the reference's. Lesson: "Your own build (EXERCISE 10.7, open)".
+    // Stuck? hint 10.7 (tier 1: the idea; 2: the trap; 3: the walk-through)
+    // SOLUTION BEGIN
+    // The reference's build (10.7): the surface area heuristic swept over every object rather than over
+    // bins. At each node, along each axis, the objects sorted by the centre of their boxes; every
+    // plane between two neighbours costed by 10.1 (a sweep from the right stores the suffixes' boxes,
+    // one from the left grows the prefix); the cheapest of the three axes splits the node, unless
+    // 10.3 says leaf (the SAH's own rule, no leaf size). Nodes depth first, as bvh.hpp lays them out.
+    class SweepBuild {
+    public:
+        explicit SweepBuild(const std::vector<Bounds>& boxes) : boxes_(boxes), centres_(boxes.size())
+        {
+            for (size_t k = 0; k < boxes.size(); ++k)
+                centres_[k] = boxes[k].centre();
+            bvh_.object_index.resize(boxes.size());
+            std::iota(bvh_.object_index.begin(), bvh_.object_index.end(), 0u);
+            if (!boxes.empty())
+                node(0, static_cast<int>(boxes.size()), 0);
+        }
+        Bvh take() { return std::move(bvh_); }
+
+    private:
+        std::uint32_t node(int begin, int end, int depth)
+        {
+            const auto self = static_cast<std::uint32_t>(bvh_.nodes.size());
+            bvh_.nodes.push_back({});
+            Bounds box;
+            for (int i = begin; i < end; ++i)
+                box.grow(boxes_[bvh_.object_index[i]]);
+            const int n = end - begin;
+            std::uint32_t* index = bvh_.object_index.data();
+            int best_axis = -1, best_middle = 0;
+            float best_cost = infinity;
+            std::vector<std::uint32_t> sorted[3];
+            for (int a = 0; a < 3 && n > 1; ++a) {
+                sorted[a].assign(index + begin, index + end);
+                std::sort(sorted[a].begin(), sorted[a].end(), [&](std::uint32_t p, std::uint32_t q) {
+                    return centres_[p][a] < centres_[q][a] || (centres_[p][a] == centres_[q][a] && p < q);
+                });
+                suffix_.resize(static_cast<size_t>(n) + 1);
+                suffix_[n] = Bounds{};
+                for (int i = n - 1; i > 0; --i) {
+                    suffix_[i] = suffix_[i + 1];
+                    suffix_[i].grow(boxes_[sorted[a][i]]);
+                }
+                Bounds prefix;
+                for (int i = 1; i < n; ++i) {  // the first i objects on the left
+                    prefix.grow(boxes_[sorted[a][i - 1]]);
+                    const float cost = sah_cost(box, prefix, i, suffix_[i], n - i);
+                    if (cost < best_cost)
+                        best_cost = cost, best_axis = a, best_middle = i;
+                }
+            }
+            const bool too_many = n > std::numeric_limits<std::uint16_t>::max();  // a leaf counts in 16 bits
+            if (!too_many && (best_axis < 0 || make_leaf(n, depth, 1, bvh_stack_size - 2, best_cost))) {
+                bvh_.nodes[self] = {box.min, static_cast<std::uint32_t>(begin), box.max, static_cast<std::uint16_t>(n), 0};
+                return self;
+            }
+            if (best_axis < 0 || too_many)
+                best_axis = std::max(best_axis, 0), best_middle = n / 2;
+            if (sorted[best_axis].empty())
+                sorted[best_axis].assign(index + begin, index + end);
+            std::copy(sorted[best_axis].begin(), sorted[best_axis].end(), index + begin);
+            node(begin, begin + best_middle, depth + 1);
+            const std::uint32_t second = node(begin + best_middle, end, depth + 1);
+            bvh_.nodes[self] = {box.min, second, box.max, 0, static_cast<std::uint16_t>(best_axis)};
+            return self;
+        }
+
+        const std::vector<Bounds>& boxes_;
+        std::vector<point3> centres_;
+        std::vector<Bounds> suffix_;  // the boxes of the objects from i on, along the axis swept
+        Bvh bvh_;
+    };
+    return SweepBuild(boxes).take();
+    // SOLUTION END
+    // STUB return stub("10.7", Bvh{});
 }
 
 }  // namespace rt

@@ -15,6 +15,11 @@
 # kept under BUILD_DIR/students/NAME/, and BUILD_DIR/class.html links them all; below the students,
 # it gives each exercise's share at full marks, mean points and most failed cases (grade_report
 # --class-page computes them from the results files), also written to EXERCISES as CSV.
+# The open exercises' leaderboard (10.7's cost, lower first; only correct answers ranked) closes the
+# class page, and BUILD_DIR/leaderboard.html holds it alone, to share with the class: -D
+# LEADERBOARD=pseudonyms shows each student there by a pseudonym (the class page lists each beside
+# the name), from -D PSEUDONYM_KEY=any text you keep to yourself (the same key, the same pseudonyms
+# at every regrade; without one, anyone with the class list could work them out). Default: names.
 get_filename_component(source_dir "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
 if(NOT SUBMISSIONS OR NOT IS_DIRECTORY "${SUBMISSIONS}")
   message(FATAL_ERROR "grade_batch: SUBMISSIONS=${SUBMISSIONS} is not a folder (-D SUBMISSIONS=/path/to/class)")
@@ -24,6 +29,12 @@ if(NOT BUILD_DIR)
 endif()
 if(NOT GRADEBOOK)
   set(GRADEBOOK "${BUILD_DIR}/gradebook.csv")
+endif()
+if(NOT LEADERBOARD)
+  set(LEADERBOARD names)
+endif()
+if(NOT LEADERBOARD MATCHES "^(names|pseudonyms)$")
+  message(FATAL_ERROR "grade_batch: LEADERBOARD takes names or pseudonyms, got '${LEADERBOARD}'")
 endif()
 if(NOT EXERCISES)
   get_filename_component(book_dir "${GRADEBOOK}" DIRECTORY)
@@ -115,7 +126,8 @@ if(NOT report)
 endif()
 list(GET report 0 report)
 execute_process(COMMAND "${report}" --class-page "${BUILD_DIR}/class.html" --class-rows "${class_rows}"
-    --link-gradebook "${GRADEBOOK}" --exercises-csv "${EXERCISES}" ${graded}
+    --link-gradebook "${GRADEBOOK}" --exercises-csv "${EXERCISES}" --leaderboard ${LEADERBOARD}
+    --pseudonym-key "${PSEUDONYM_KEY}" --leaderboard-page "${BUILD_DIR}/leaderboard.html" ${graded}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "grade_batch: the class page could not be written (${rc})")

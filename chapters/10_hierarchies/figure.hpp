@@ -25,6 +25,8 @@ inline BvhSettings bvh_settings(const StructureTuning& t)
         b.max_depth = t.max_depth;
     if (t.split == "median")
         b.split = BvhSplit::median;
+    else if (t.split == "open")
+        b.split = BvhSplit::open;
     return b;
 }
 

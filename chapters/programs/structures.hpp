@@ -29,7 +29,7 @@ struct StructureTuning {
     float lambda = 0.0f;           // --lambda, cells per object; 0: the structure's default_lambda
     int leaf_size = 0;             // --leaf-size; 0: the structure's own
     int max_depth = -1;            // --max-depth; -1: the structure's own
-    std::string split;             // --split, "sah" or "median"; empty: the structure's own
+    std::string split;             // --split, "sah", "median" or "open"; empty: the structure's own
     std::uint32_t table_size = 0;  // --table-size, a hash table's size; 0: the structure's own
 };
 

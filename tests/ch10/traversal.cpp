@@ -3,6 +3,7 @@
 #include "tests/ch07/agreement.hpp"
 #include "tests/ch10/bvh_suspect.hpp"
 #include "tests/ch10/closed_sphere.hpp"
+#include "tests/ch10/two_leaves.hpp"
 
 #include <filesystem>
 #include <iomanip>
@@ -15,28 +16,6 @@ using namespace rt::grader::agreement;
 namespace {
 
 std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
-// Two spheres along x, one per leaf: node 0 the root (split along x), node 1 the leaf of sphere 0
-// at x = 1, node 2 the leaf of sphere 1 at x = 5.
-const std::vector<Sphere> two = {{{1, 0, 0}, 0.5f}, {{5, 0, 0}, 0.5f}};
-
-Objects two_objects()
-{
-    Objects o;
-    o.spheres = two.data();
-    o.sphere_count = 2;
-    return o;
-}
-
-Bvh two_leaves()
-{
-    Bvh b;
-    b.nodes = {{{0.5f, -0.5f, -0.5f}, 2, {5.5f, 0.5f, 0.5f}, 0, 0},
-               {{0.5f, -0.5f, -0.5f}, 0, {1.5f, 0.5f, 0.5f}, 1, 0},
-               {{4.5f, -0.5f, -0.5f}, 1, {5.5f, 0.5f, 0.5f}, 1, 0}};
-    b.object_index = {0, 1};
-    return b;
-}
 
 // A failing case runs the BVH's exercises again on the first ray that differs (bvh_suspect.hpp).
 std::string suspect_bvh(const Accelerator& built, const Ray& ray, Interval range, const Objects& objects)

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <fstream>
+#include <iomanip>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -192,6 +195,60 @@ std::string exercises_table_html(const std::vector<ExerciseStats>& stats)
         out << "</td></tr>\n";
     }
     out << "</table>\n";
+    return out.str();
+}
+
+std::string pseudonym_of(const std::string& student, const std::string& key)
+{
+    static const char* const words[] = {"Otter", "Heron", "Lynx", "Badger", "Falcon", "Marten", "Ibex", "Puffin",
+                                        "Gecko", "Bison", "Crane", "Dingo", "Egret", "Ferret", "Gannet", "Hare"};
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a, 64 bits
+    for (const char c : key + '\n' + student) {
+        h ^= static_cast<unsigned char>(c);
+        h *= 1099511628211ull;
+    }
+    std::ostringstream s;
+    s << words[h % std::size(words)] << '-' << std::hex << std::setw(4) << std::setfill('0') << ((h >> 16) & 0xffff);
+    return s.str();
+}
+
+std::vector<Leaderboard> class_leaderboards(const std::vector<StudentResults>& students, LeaderboardNames names,
+                                            const std::string& key)
+{
+    std::vector<Leaderboard> boards;
+    for (const StudentResults& student : students)
+        for (const CaseResult& r : leaderboard_of(student.cases)) {
+            auto board = std::find_if(boards.begin(), boards.end(), [&](const Leaderboard& b) { return b.measure == r.measure; });
+            if (board == boards.end())
+                board = boards.insert(boards.end(), Leaderboard{r.measure, r.reference, {}});
+            board->ranked.push_back({student.name,
+                                     names == LeaderboardNames::pseudonyms ? pseudonym_of(student.name, key) : student.name,
+                                     r.measured});
+        }
+    for (Leaderboard& b : boards)
+        std::sort(b.ranked.begin(), b.ranked.end(), [](const LeaderboardEntry& x, const LeaderboardEntry& y) {
+            return std::tie(x.value, x.student) < std::tie(y.value, y.student);
+        });
+    std::sort(boards.begin(), boards.end(), [](const Leaderboard& x, const Leaderboard& y) { return kit_order(x.measure, y.measure); });
+    return boards;
+}
+
+std::string leaderboards_html(const std::vector<Leaderboard>& boards, bool with_names)
+{
+    std::ostringstream out;
+    for (const Leaderboard& b : boards) {
+        out << "<h3>" << escape_xml(b.measure) << "</h3>\n<table class=\"leaderboard\"><tr><th>rank</th><th>who</th>"
+            << (with_names ? "<th>student</th>" : "") << "<th>" << escape_xml(b.measure) << " (lower is better; the reference: "
+            << b.reference << ")</th></tr>\n";
+        for (size_t k = 0; k < b.ranked.size(); ++k) {
+            const LeaderboardEntry& e = b.ranked[k];
+            out << "<tr><td>" << k + 1 << "</td><td>" << escape_xml(e.shown) << "</td>"
+                << (with_names ? "<td>" + escape_xml(e.student) + "</td>" : "") << "<td class=\""
+                << (e.value <= b.reference ? "ok" : "part") << "\">" << std::fixed << std::setprecision(3) << e.value
+                << std::defaultfloat << "</td></tr>\n";
+        }
+        out << "</table>\n";
+    }
     return out.str();
 }
 

@@ -59,4 +59,33 @@ bool write_exercises_csv(const std::string& path, const std::vector<ExerciseStat
 // students not graded on it and the cases most often failed, each with its message's first line.
 std::string exercises_table_html(const std::vector<ExerciseStats>& stats);
 
+// A leaderboard: the students ranked by a measure their results carry (an open exercise's cost,
+// graded.hpp's report_measure), lower first, ties by name. Only a correct answer reports one, so
+// only students past the exercise's gate are ranked.
+enum class LeaderboardNames { names, pseudonyms };
+
+struct LeaderboardEntry {
+    std::string student;    // the folder's name
+    std::string shown;      // what the shared leaderboard says: the name, or its pseudonym
+    double value = 0.0;
+};
+
+struct Leaderboard {
+    std::string measure;     // "10.7 cost"
+    double reference = 0.0;  // the reference solution's value
+    std::vector<LeaderboardEntry> ranked;
+};
+
+// A student's pseudonym on a shared leaderboard: a word and four hex digits from a hash of `key`
+// and the name, so the same key gives the same pseudonyms at every regrade. Without a key of the
+// instructor's own, anyone holding the class list could work them out.
+std::string pseudonym_of(const std::string& student, const std::string& key);
+
+std::vector<Leaderboard> class_leaderboards(const std::vector<StudentResults>& students, LeaderboardNames names,
+                                            const std::string& key);
+
+// The leaderboards as HTML tables: rank, who (as shown; with `with_names` also the student's own
+// name beside a pseudonym, for the instructor's page) and the value against the reference's.
+std::string leaderboards_html(const std::vector<Leaderboard>& boards, bool with_names);
+
 }  // namespace rt::grader

@@ -177,6 +177,14 @@ bool append_step_summary(const std::string& path, const std::vector<CaseResult>&
     out << "## Points: " << score << " / " << max_score << "\n\n| chapter | points | look at |\n|---|---:|---|\n";
     for (const ChapterMark& m : chapter_marks(summarized))
         out << "| " << m.chapter << " | " << m.score << " / " << m.max_score << " | " << md(m.marks) << " |\n";
+    // The open exercises' costs against the reference's, as the class leaderboard ranks them.
+    const std::vector<CaseResult> board = leaderboard_of(summarized);
+    if (!board.empty()) {
+        out << "\n### Your cost against the reference's (lower is better)\n\n| measure | yours | the reference's |\n|---|---:|---:|\n";
+        for (const CaseResult& m : board)
+            out << "| " << md(m.measure) << " | " << std::fixed << std::setprecision(3) << m.measured << " | " << m.reference
+                << std::defaultfloat << " |\n";
+    }
     std::map<std::string, std::vector<const CaseResult*>> by_chapter;
     for (const CaseResult& r : summarized)
         by_chapter[chapter_of(r)].push_back(&r);

@@ -17,7 +17,8 @@
 // After a batch, the class page and what the class did per exercise (class_stats.hpp):
 //
 //   grade_report --class-page class.html --class-rows ROWS --link-gradebook gradebook.csv
-//                --exercises-csv exercises.csv STUDENT_FOLDER...
+//                --exercises-csv exercises.csv [--leaderboard names|pseudonyms [--pseudonym-key KEY]]
+//                [--leaderboard-page leaderboard.html] STUDENT_FOLDER...
 //
 // Each student's folder (named after the student) holds their chapters' results files (NN.results);
 // ROWS is the students' table that --class-row appended to; the page links both CSV files.
@@ -40,7 +41,8 @@ namespace {
 
 // The class page and the exercises' CSV from every student's folder of results files.
 int write_class(const std::string& page, const std::string& rows_path, const std::string& gradebook,
-                const std::string& exercises_csv, const std::vector<std::string>& folders)
+                const std::string& exercises_csv, const std::vector<std::string>& folders,
+                rt::grader::LeaderboardNames names, const std::string& key, const std::string& leaderboard_page)
 {
     using namespace rt::grader;
     namespace fs = std::filesystem;
@@ -68,7 +70,14 @@ int write_class(const std::string& page, const std::string& rows_path, const std
     std::ostringstream rows;
     if (std::ifstream in{rows_path})
         rows << in.rdbuf();
-    if (!write_class_page(page, rows.str(), stats, gradebook, exercises_csv))
+    const std::vector<Leaderboard> boards = class_leaderboards(students, names, key);
+    const std::string shared = boards.empty() ? "" : leaderboard_page;
+    if (!shared.empty()) {
+        if (!write_leaderboard_page(shared, boards))
+            return std::cerr << "grade_report: " << shared << ": cannot write\n", 2;
+        std::cout << "wrote " << shared << '\n';
+    }
+    if (!write_class_page(page, rows.str(), stats, gradebook, exercises_csv, boards, shared))
         return std::cerr << "grade_report: " << page << ": cannot write\n", 2;
     std::cout << "wrote " << page << '\n';
     return 0;
@@ -80,7 +89,8 @@ int main(int argc, char** argv)
 {
     using namespace rt::grader;
     std::string json, junit, gradebook, student, html, class_row, title = "Grade", classroom_output, step_summary;
-    std::string class_page, class_rows, link_gradebook, exercises_csv;
+    std::string class_page, class_rows, link_gradebook, exercises_csv, pseudonym_key, leaderboard_page;
+    rt::grader::LeaderboardNames leaderboard_names = rt::grader::LeaderboardNames::names;
     std::vector<std::string> inputs;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
@@ -110,6 +120,15 @@ int main(int argc, char** argv)
             link_gradebook = argv[++k];
         else if (arg == "--exercises-csv" && k + 1 < argc)
             exercises_csv = argv[++k];
+        else if (arg == "--leaderboard" && k + 1 < argc) {
+            const std::string how = argv[++k];
+            if (how != "names" && how != "pseudonyms")
+                return std::cerr << "grade_report: --leaderboard takes names or pseudonyms, got '" << how << "'\n", 2;
+            leaderboard_names = how == "names" ? rt::grader::LeaderboardNames::names : rt::grader::LeaderboardNames::pseudonyms;
+        } else if (arg == "--pseudonym-key" && k + 1 < argc)
+            pseudonym_key = argv[++k];
+        else if (arg == "--leaderboard-page" && k + 1 < argc)
+            leaderboard_page = argv[++k];
         else if (arg.rfind("--", 0) == 0) {
             std::cerr << "grade_report: unknown option '" << arg << "'\n";
             return 2;
@@ -117,7 +136,8 @@ int main(int argc, char** argv)
             inputs.push_back(arg);
     }
     if (!class_page.empty())
-        return write_class(class_page, class_rows, link_gradebook, exercises_csv, inputs);
+        return write_class(class_page, class_rows, link_gradebook, exercises_csv, inputs, leaderboard_names, pseudonym_key,
+                           leaderboard_page);
     std::vector<CaseResult> results;
     int missing = 0;
     for (const std::string& path : inputs)

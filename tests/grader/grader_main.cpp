@@ -35,6 +35,7 @@
 #include "tests/grader/clauses.hpp"
 #include "tests/grader/freshness.hpp"
 #include "tests/grader/graded.hpp"
+#include "tests/grader/measure.hpp"
 #include "tests/grader/picture.hpp"
 #include "tests/grader/points.hpp"
 #include "tests/grader/summary.hpp"
@@ -127,6 +128,7 @@ public:
         current_.name = info.name;
         read_tags(info, current_);
         rt::forget_stubs();
+        measured_now.reset();
     }
 
 #ifdef RT_CATCH2_V3
@@ -185,6 +187,11 @@ public:
     void testCaseEnded(const Catch::TestCaseStats& stats) override
     {
         current_.stubs = rt::join_words(rt::stubs_that_ran(), " ");
+        if (measured_now) {
+            current_.measure = measured_now->name;
+            current_.measured = measured_now->value;
+            current_.reference = measured_now->reference;
+        }
         const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0 &&
                             !rests_on_earlier_stub(current_);
         if (passed)

@@ -181,7 +181,8 @@ bool append_class_row(const std::string& path, const std::string& student, const
 }
 
 bool write_class_page(const std::string& path, const std::string& student_rows, const std::vector<ExerciseStats>& exercises,
-                      const std::string& gradebook, const std::string& exercises_csv)
+                      const std::string& gradebook, const std::string& exercises_csv,
+                      const std::vector<Leaderboard>& boards, const std::string& leaderboard_page)
 {
     std::ofstream out(path);
     out << R"(<!doctype html>
@@ -204,7 +205,32 @@ stub, a case stopped by its time limit or crashed.</p>
 first line of its message (the line most of them got). A student whose chapter file is missing or does not
 compile counts as 0 points for each of its exercises, as does one whose cases all ran the handed-out stubs:
 they are counted under <em>not graded</em>, not among those who failed a case.</p>
-)" << exercises_table_html(exercises)
+)" << exercises_table_html(exercises);
+    if (!boards.empty()) {
+        const bool pseudonyms = std::any_of(boards.begin(), boards.end(), [](const Leaderboard& b) {
+            return std::any_of(b.ranked.begin(), b.ranked.end(), [](const LeaderboardEntry& e) { return e.shown != e.student; });
+        });
+        out << "<h2>Leaderboard</h2>\n<p>The open exercises' costs, counted by the grader (never timed), lower first: only "
+               "students whose answers passed the exercise's gate are ranked."
+            << (leaderboard_page.empty() ? std::string() : " The page to share with the class: " + link(leaderboard_page, path) + ".")
+            << (pseudonyms ? " It shows each student by the pseudonym beside their name here." : "") << "</p>\n"
+            << leaderboards_html(boards, pseudonyms);
+    }
+    out << "</body></html>\n";
+    return static_cast<bool>(out);
+}
+
+bool write_leaderboard_page(const std::string& path, const std::vector<Leaderboard>& boards)
+{
+    std::ofstream out(path);
+    out << R"(<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>Leaderboard</title>
+<style>body{font-family:sans-serif;margin:2em;color:#222}td,th{border:1px solid #ccc;padding:0.3em 0.6em;text-align:left}
+table{border-collapse:collapse;margin:0.5em 0 1.5em}td.ok{background:#dfd}td.part{background:#ffd}</style>
+</head><body><h1>Leaderboard</h1>
+<p>Each open exercise's cost as the grader counts it (nodes visited and objects tested per ray, never time),
+lower first, against the reference solution's. Only correct answers are ranked.</p>
+)" << leaderboards_html(boards, false)
         << "</body></html>\n";
     return static_cast<bool>(out);
 }

@@ -25,8 +25,15 @@ std::string case_output_html(const CaseResult& result);
 bool append_class_row(const std::string& path, const std::string& student, const std::vector<ChapterMark>& chapters);
 
 // The class page: the gradebook and the exercises' CSV as links (relative to the page), the
-// students' table (the rows append_class_row wrote), then the exercises' table (class_stats.hpp).
+// students' table (the rows append_class_row wrote), the exercises' table (class_stats.hpp), then
+// the open exercises' leaderboards (leaderboards_html, with each student's name), linking the page
+// to share with the class (`leaderboard_page`, written by write_leaderboard_page; empty: none).
 bool write_class_page(const std::string& path, const std::string& student_rows, const std::vector<ExerciseStats>& exercises,
-                      const std::string& gradebook, const std::string& exercises_csv);
+                      const std::string& gradebook, const std::string& exercises_csv,
+                      const std::vector<Leaderboard>& boards = {}, const std::string& leaderboard_page = "");
+
+// The leaderboards alone, as the students may see them: each student as the board shows them
+// (their name, or their pseudonym), no points and no messages.
+bool write_leaderboard_page(const std::string& path, const std::vector<Leaderboard>& boards);
 
 }  // namespace rt::grader

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 
@@ -24,6 +25,15 @@ std::string escape_line(const std::string& s)
         else out += c;
     }
     return out;
+}
+
+// A measure as the results file and results.json write it: six significant digits (0.982, not
+// 0.98199999999999998), finer than any tier.
+std::string number_text(double v)
+{
+    std::ostringstream s;
+    s << std::setprecision(6) << v;
+    return s.str();
 }
 
 std::string unescape_line(const std::string& s)
@@ -146,6 +156,10 @@ void print_points_table(std::ostream& out, const std::vector<CaseResult>& result
                     out << "      lost " << r.max_score << ": " << r.name << '\n';
         }
     }
+    // An open exercise's measure, as the leaderboard ranks it.
+    for (const CaseResult& m : leaderboard_of(results))
+        out << "  " << m.measure << ": " << number_text(m.measured) << " (the reference: " << number_text(m.reference)
+            << "; lower is better, and the class leaderboard ranks it)\n";
 }
 
 bool append_gradebook_row(const std::string& path, const std::string& student, const std::vector<CaseResult>& results)
@@ -216,7 +230,19 @@ std::string tidy_output(std::string output)
 static void write_line(std::ostream& out, const CaseResult& r)
 {
     out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
-        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\t' << status_word(r.status) << '\n';
+        << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\t' << status_word(r.status);
+    if (!r.measure.empty())
+        out << '\t' << escape_line(r.measure) << '\t' << number_text(r.measured) << '\t' << number_text(r.reference);
+    out << '\n';
+}
+
+std::vector<CaseResult> leaderboard_of(const std::vector<CaseResult>& results)
+{
+    std::vector<CaseResult> board;
+    for (const CaseResult& r : results)
+        if (!r.measure.empty() && std::none_of(board.begin(), board.end(), [&](const CaseResult& b) { return b.measure == r.measure; }))
+            board.push_back(r);
+    return board;
 }
 
 bool write_results(const std::string& path, const std::vector<CaseResult>& results)
@@ -269,6 +295,11 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
                    : build_line                  ? CaseStatus::does_not_compile
                    : r.score == r.max_score      ? CaseStatus::passed
                                                  : CaseStatus::failed;
+        if (fields.size() > 9 && !fields[7].empty()) {
+            r.measure = fields[7];
+            r.measured = std::strtod(fields[8].c_str(), nullptr);
+            r.reference = std::strtod(fields[9].c_str(), nullptr);
+        }
         results.push_back(r);
     }
     return true;
@@ -293,7 +324,17 @@ bool write_gradescope_json(const std::string& path, const std::vector<CaseResult
         else
             out << escape_json(html) << "\", \"output_format\": \"html\"}";
     }
-    out << "\n  ]\n}\n";
+    out << "\n  ]";
+    // Gradescope's leaderboard: each measure, lower first.
+    const std::vector<CaseResult> board = leaderboard_of(results);
+    if (!board.empty()) {
+        out << ",\n  \"leaderboard\": [";
+        for (size_t k = 0; k < board.size(); ++k)
+            out << (k ? "," : "") << "\n    {\"name\": \"" << escape_json(board[k].measure)
+                << "\", \"value\": " << number_text(board[k].measured) << ", \"order\": \"asc\"}";
+        out << "\n  ]";
+    }
+    out << "\n}\n";
     return static_cast<bool>(out);
 }
 

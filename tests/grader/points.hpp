@@ -40,6 +40,10 @@ struct CaseResult {
     CaseStatus status = CaseStatus::failed;
     std::string output;   // what went in and what came out, for a failed case
     std::string stubs;    // the exercises whose handed-out stubs ran in the case: "07.1 07.3"
+    // What the case measured for the class leaderboard (graded.hpp's report_measure), lower first:
+    // its name ("10.7 cost"; empty: none), the student's value and the reference solution's.
+    std::string measure;
+    double measured = 0.0, reference = 0.0;
 
     bool passed() const { return status == CaseStatus::passed; }
 };
@@ -58,6 +62,10 @@ void print_case(std::ostream& out, const CaseResult& result);
 void print_points_table(std::ostream& out, const std::vector<CaseResult>& results,
                         const std::vector<CaseResult>& cases = {});
 
+// The measures of a run for its leaderboard, one per name in the order first met (every tier case of
+// an open exercise reports the same one): name, the student's value and the reference's.
+std::vector<CaseResult> leaderboard_of(const std::vector<CaseResult>& results);
+
 // Text safe inside XML or HTML: & < > " escaped.
 std::string escape_xml(const std::string& s);
 
@@ -75,6 +83,8 @@ std::string tidy_output(std::string output);
 // score, name, output, stubs, status. A line without the status (a file written before it was
 // added) reads as passed when its score is whole and failed otherwise, an NN.build line as
 // does_not_compile; a reader that knows only the first six fields still reads this one.
+// Three more fields when the case measured something: the measure's name, the value and the
+// reference's.
 bool write_results(const std::string& path, const std::vector<CaseResult>& results);
 bool append_result(const std::string& path, const CaseResult& result);
 bool read_results(const std::string& path, std::vector<CaseResult>& results);
