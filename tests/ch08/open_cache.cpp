@@ -1,0 +1,206 @@
+// EXERCISE 08.4 (open): mailboxes in 1 KB. The gate first: the grid with your ray cache
+// answers every ray as brute force does (closest and any hit), on the scenes 08.A uses, and your
+// cache keeps to its own 1 KB. Then its cost: intersection tests per closest-hit ray on three
+// generated scenes of long sticks, against the reference's, in three tiers (one case each, so the
+// points add up by tier).
+#include "07_uniform_grid/figure.hpp"
+#include "08_mailboxing/figure.hpp"
+#include "tests/ch07/agreement.hpp"
+#include "tests/grader/measure.hpp"
+
+#include <cmath>
+#include <iomanip>
+
+using namespace rt;
+using namespace rt::grader;
+using namespace rt::grader::agreement;
+
+namespace {
+
+const Build cached{"the grid with your ray cache (08.4)",
+                   [](const Objects& objects, float lambda) { return std::make_unique<RayCacheGrid>(objects, lambda); }};
+
+std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
+
+std::string said(bool found, const ObjectHit& h)
+{
+    std::ostringstream s;
+    s.precision(9);
+    if (found)
+        s << "a hit on object " << h.object << " at t " << h.t << " (beta " << h.beta << ", gamma " << h.gamma << ")";
+    else
+        s << "no hit";
+    return s.str();
+}
+
+// The contract's own words on two objects of the sticks, called directly: a second call of one
+// signature answers as a fresh test would, bit for bit (beta and gamma too), counted as one test
+// then one answer; two caches are two threads (the same signature in another cache is another
+// ray: it must be tested, not answered from the first cache's memory).
+bool check_calls()
+{
+    const NffScene nff = generated_scene(write_sticks, 1, "sticks 1");
+    const LitScene scene = lit_scene(nff);
+    const Objects objects = objects_of(scene, lit_tests);
+    bool right = true;
+    for (int k = 0; k < objects.size() && k < 40; ++k) {
+        const Bounds b = objects.bounds(k);
+        const point3 at = b.centre();
+        const Ray onto{at - vec3(0.3f, 2.0f, 0.1f), glm::normalize(vec3(0.3f, 2.0f, 0.1f))};  // towards its centre
+        const Ray away{at - vec3(0.3f, 2.0f, 0.1f), glm::normalize(vec3(-0.3f, -2.0f, -0.1f))};
+        const Interval range{0.0f, infinity};
+        ObjectHit want_onto, want_away;
+        const bool hits_onto = objects.intersect(k, onto, range, want_onto);
+        const bool hits_away = objects.intersect(k, away, range, want_away);
+        RayCache one, two;
+        ObjectHit first, again, other;
+        reset_counters();
+        const bool f1 = cached_intersect(one, 1, objects, k, onto, range, first);
+        const bool f2 = cached_intersect(one, 1, objects, k, onto, range, again);
+        const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+        const bool f3 = cached_intersect(two, 1, objects, k, away, range, other);
+        const auto same = [](bool fa, const ObjectHit& a, bool fb, const ObjectHit& b) {
+            return fa == fb && (!fa || (a.object == b.object && a.t == b.t && a.beta == b.beta && a.gamma == b.gamma));
+        };
+        const bool ok = same(f1, first, hits_onto, want_onto) && same(f2, again, hits_onto, want_onto) &&
+                        tests + answers == 2 && tests >= 1 && same(f3, other, hits_away, want_away);
+        INFO("object " << k << " of sticks 1, asked twice with signature 1 in one fresh cache along " << show(onto)
+                       << ", t in (0, inf), then with signature 1 in a second fresh cache (another thread) along "
+                       << show(away) << ": your cached_intersect gave " << said(f1, first) << ", then "
+                       << said(f2, again) << " (" << tests << " tests and " << answers
+                       << " answers for the two calls), then " << said(f3, other) << "; a fresh test gives "
+                       << said(hits_onto, want_onto) << " and " << said(hits_away, want_away)
+                       << ": each call answers as the test would, bit for bit, with 1 test then at most 1 answer");
+        CHECK(ok);
+        right = right && ok;
+        if (!ok)
+            break;
+    }
+    return right;
+}
+
+// The gate: 08.A's scenes and rays, ties, a huge floor, far away; and the calls above. Whether
+// the cache passed it.
+bool check_gate()
+{
+    INFO("the gate of 08.4: a cache that answers a call or a ray differently from a fresh test or brute force "
+         "scores 0 in every 08.4 case");
+    bool passed = check_calls();
+    passed = check_scene_files(cached, RT_NFF_SCENES_DIR, 300) && passed;
+    passed = check_scene(cached, generated_scene(write_sticks, 1, "sticks 1"), 500) && passed;
+    passed = check_scene(cached, generated_scene(write_sticks, 3, "sticks 3"), 300) && passed;
+    passed = check_scene(cached, generated_scene(write_tree, 3, "tree 3"), 300) && passed;
+    return check_hard_cases(cached) && passed;
+}
+
+// The scenes 08.4's cost is measured on (the contract's "three of the kit's generated scenes of
+// long sticks"), with the reference's tests per ray on each (grader.ch08.open_reference_costs...
+// holds these to the solution's).
+struct CostScene {
+    const char* name;
+    int depth;
+    float lambda;
+    double reference;  // the reference cache's tests per ray
+};
+const CostScene cost_scenes[] = {
+    {"sticks 3 at lambda 16", 3, 16.0f, 15.742432},
+    {"sticks 4 at lambda 32", 4, 32.0f, 20.493164},
+    {"sticks 5 at lambda 64", 5, 64.0f, 31.910645},
+};
+constexpr int cost_rays = 4096;  // seeded rays per scene (seeded_ray), closest hits
+
+// Intersection tests per closest-hit ray through `make`'s structure over a scene, on cost_rays seeded rays.
+template <class Make>
+double tests_per_ray(const CostScene& c, Make&& make)
+{
+    const NffScene nff = generated_scene(write_sticks, c.depth, c.name);
+    const LitScene scene = lit_scene(nff);
+    const Objects objects = objects_of(scene, lit_tests);
+    const std::unique_ptr<Accelerator> grid = make(objects, c.lambda);
+    Bounds box;
+    for (int k = 0; k < objects.size(); ++k)
+        box.grow(objects.bounds(k));
+    Rng rng(77, 3);
+    reset_counters();
+    int rays = 0;
+    for (int k = 0; k < cost_rays; ++k)
+        if (const std::optional<SeededRay> r = seeded_ray(rng, nff.view, box, k)) {
+            ObjectHit hit;
+            grid->closest(r->ray, r->range, objects, hit);
+            ++rays;
+        }
+    return static_cast<double>(counter(Counter::intersection_tests)) / rays;
+}
+
+double cache_tests_per_ray(const CostScene& c)
+{
+    return tests_per_ray(c, [](const Objects& o, float lambda) { return std::make_unique<RayCacheGrid>(o, lambda); });
+}
+
+std::string fixed(double v, int digits)
+{
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(digits) << v;
+    return s.str();
+}
+
+// Your cost against the reference's: the geometric mean over the scenes of the ratio of tests per
+// ray, with each scene's figures in words for the case's message.
+double cost_ratio(std::string& words)
+{
+    double log_sum = 0.0;
+    for (const CostScene& c : cost_scenes) {
+        const double mine = cache_tests_per_ray(c);
+        log_sum += std::log(mine / c.reference);
+        words += std::string("\n  ") + c.name + ": " + fixed(mine, 2) + " tests per ray, the reference " + fixed(c.reference, 2);
+    }
+    return std::exp(log_sum / static_cast<double>(std::size(cost_scenes)));
+}
+
+// One tier: the gate, then (for a cache that passed it: only those are ranked) the cost at most
+// `tier` times the reference's.
+void check_tier(double tier)
+{
+    if (!check_gate())
+        return;
+    std::string words;
+    const double ratio = cost_ratio(words);
+    report_measure("08.4 cost", std::round(ratio * 1000.0) / 1000.0, 1.0);  // as the leaderboard shows it
+    INFO("your cache's cost (intersection tests per closest-hit ray) is " << fixed(ratio, 3)
+         << " times the reference's (the geometric mean over the scenes);" << words << "\nthis tier asks at most "
+         << fixed(tier, 2) << " times");
+    CHECK(ratio <= tier);
+}
+
+}  // namespace
+
+GRADED_TEST("cached_intersect (open): a correct cache costing at most 2 times the reference's tests", "08.4", 4)
+{
+    check_tier(2.0);
+}
+
+GRADED_TEST("cached_intersect (open): a correct cache costing at most 1.5 times the reference's tests", "08.4", 4)
+{
+    check_tier(1.5);
+}
+
+GRADED_TEST("cached_intersect (open): a correct cache costing at most 1.02 times the reference's tests", "08.4", 4)
+{
+    check_tier(1.02);
+}
+
+// The kit's own check (not graded; grader.ch08.open_reference_costs_are_the_solutions runs it on
+// the solutions): the reference costs above are what the reference cache measures now, and the
+// lesson's other figures on the same rays: the per-object mailboxes and no mailboxes at all.
+TEST_CASE("08.4's stored reference costs are the reference cache's", "[.][open_reference_costs]")
+{
+    for (const CostScene& c : cost_scenes) {
+        const double reference = cache_tests_per_ray(c);
+        const double mailboxes = tests_per_ray(c, [](const Objects& o, float l) { return std::make_unique<MailboxGrid>(o, l); });
+        const double none = tests_per_ray(c, [](const Objects& o, float l) { return std::make_unique<UniformGrid>(o, l); });
+        WARN(c.name << ": reference " << fixed(reference, 6) << ", a mailbox per object " << fixed(mailboxes, 4)
+                    << " (" << fixed(mailboxes / reference, 3) << "x), no mailboxes " << fixed(none, 4) << " ("
+                    << fixed(none / reference, 3) << "x)");
+        CHECK(fixed(reference, 6) == fixed(c.reference, 6));
+    }
+}
