@@ -29,6 +29,51 @@ inline std::uint64_t next_grid_id()
     return ++last;
 }
 
+// This thread's memory of type State for the grid numbered `grid`: made by make() on the thread's
+// first query, and again when the thread last queried another grid. A thread owns it alone.
+template <class State, class Make>
+State& this_threads(std::uint64_t grid, Make&& make)
+{
+    thread_local std::pair<std::uint64_t, State> mine{0, State{}};
+    if (mine.first != grid)
+        mine = {grid, make()};
+    return mine.second;
+}
+
+// The walk of a grid that remembers what each ray tested (the mailboxes, the ray cache): outside the
+// margins' reach brute force (grid.hpp); a ray that meets no cell takes no signature; otherwise
+// begin() hands out the ray's signature, and each cell is asked with cell(grid, walk, signature,
+// best) for the closest hit, each listed object with ask(signature, k, hit) for any hit.
+template <class Begin, class Cell>
+bool remembering_closest(const UniformGrid& u, const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit,
+                         Begin&& begin, Cell&& cell)
+{
+    if (!u.margins().covers(ray, range))
+        return brute_force().closest(ray, range, objects, hit);
+    const Grid& g = u.grid();
+    GridWalk walk = start_walk(g.shape, ray, range);
+    if (walk.missed)
+        return false;
+    const std::uint32_t signature = begin();
+    const auto query = [&](const GridWalk& w, ObjectHit& best) { return cell(g, w, signature, best); };
+    return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);
+}
+
+template <class Begin, class Ask>
+bool remembering_any(const UniformGrid& u, const Ray& ray, Interval range, const Objects& objects, Begin&& begin, Ask&& ask)
+{
+    if (!u.margins().covers(ray, range))
+        return brute_force().any(ray, range, objects);
+    const Grid& g = u.grid();
+    GridWalk walk = start_walk(g.shape, ray, range);
+    if (walk.missed)
+        return false;
+    const std::uint32_t signature = begin();
+    ObjectHit hit;
+    const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, [&](int k) { return ask(signature, k, hit); }); };
+    return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
+}
+
 class MailboxGrid final : public Accelerator {
 public:
     MailboxGrid(const Objects& objects, float lambda) : grid_(objects, lambda), objects_(objects.size()) {}
@@ -37,34 +82,21 @@ public:
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;  // before next_signature: a ray that meets no cell takes no signature
-        Mailboxes& m = mailboxes();
-        const std::uint32_t signature = next_signature(m);
-        const auto query = [&](const GridWalk& w, ObjectHit& best) {
-            return closest_in_cell_mailboxed(g, w, m, signature, ray, range, objects, best);
-        };
-        return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);  // (grid.hpp)
+        Mailboxes* m = nullptr;
+        return remembering_closest(
+            grid_, ray, range, objects, hit, [&] { return next_signature(*(m = &mailboxes())); },
+            [&](const Grid& g, const GridWalk& w, std::uint32_t signature, ObjectHit& best) {
+                return closest_in_cell_mailboxed(g, w, *m, signature, ray, range, objects, best);
+            });
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;
-        Mailboxes& m = mailboxes();
-        const std::uint32_t signature = next_signature(m);
-        ObjectHit hit;
-        const auto ask = [&](int k) { return mailboxed_intersect(m, signature, objects, k, ray, range, hit); };
-        const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, ask); };
-        return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
+        Mailboxes* m = nullptr;
+        return remembering_any(grid_, ray, range, objects, [&] { return next_signature(*(m = &mailboxes())); },
+                               [&](std::uint32_t signature, int k, ObjectHit& hit) {
+                                   return mailboxed_intersect(*m, signature, objects, k, ray, range, hit);
+                               });
     }
 
     std::size_t bytes() const override { return grid_.bytes(); }
@@ -80,26 +112,16 @@ public:
     // when the thread last queried another grid (each grid has its own number, never reused).
     Mailboxes& mailboxes() const
     {
-        ThreadMailboxes& t = thread_mailboxes();
-        if (t.owner != id_) {
-            t.owner = id_;
-            t.set.box.assign(static_cast<std::size_t>(objects_), Mailbox{});
-            t.set.last_signature = 0;
-        }
-        assert(t.set.box.size() == static_cast<std::size_t>(objects_));
-        return t.set;
+        Mailboxes& m = this_threads<Mailboxes>(id_, [&] {
+            Mailboxes fresh;
+            fresh.box.assign(static_cast<std::size_t>(objects_), Mailbox{});
+            return fresh;
+        });
+        assert(m.box.size() == static_cast<std::size_t>(objects_));
+        return m;
     }
 
 private:
-    struct ThreadMailboxes {
-        std::uint64_t owner = 0;
-        Mailboxes set;
-    };
-    static ThreadMailboxes& thread_mailboxes()
-    {
-        thread_local ThreadMailboxes mine;
-        return mine;
-    }
     UniformGrid grid_;
     int objects_;
     std::uint64_t id_ = next_grid_id();
@@ -111,59 +133,55 @@ private:
 inline bool closest_in_cell_cached(const Grid& grid, const GridWalk& walk, RayCache& cache, std::uint32_t signature,
                                    const Ray& ray, Interval range, const Objects& objects, ObjectHit& best)
 {
-    bool found = false;
     const float exit = walk.cell_exit();
-    for (std::uint32_t i = grid.cell_start[walk.p]; i < grid.cell_start[walk.p + 1]; ++i) {
-        const int k = static_cast<int>(grid.object_index[i]);
-        ObjectHit hit;
-        if (cached_intersect(cache, signature, objects, k, ray, closer_than(range, best, k), hit) && hit.t <= exit) {
-            best = hit;
-            found = true;
-        }
-    }
-    return found;
+    bool changed = false;
+    for_each_listed(grid, walk.p, [&](int k) {
+        ObjectHit h;
+        if (cached_intersect(cache, signature, objects, k, ray, closer_than(range, best, k), h) && h.t <= exit)
+            best = h, changed = true;
+    });
+    return changed;
 }
+
+// One thread's ray cache and ray counter (RayCacheGrid): signatures 1, 2, ..., 2^32 - 1, then 1
+// again with every word of the cache 0, as 08.1 does for the mailboxes.
+struct ThreadRayCache {
+    std::uint32_t last_signature = 0;
+    RayCache cache;
+
+    std::uint32_t next()
+    {
+        if (++last_signature == 0) {  // wrapped: no word may hold a signature handed out again
+            cache = RayCache{};
+            last_signature = 1;
+        }
+        return last_signature;
+    }
+};
 
 // Chapter 07's grid with a ray cache per thread (EXERCISE 08.4, open) in place of the mailboxes:
 // ray_cache_bytes per thread, whatever the scene. Each ray that meets a cell takes the thread's
-// next signature (1, 2, ..., 2^32 - 1, then 1 again with every word of the cache 0, as 08.1 does
-// for the mailboxes) and asks each object through your cached_intersect.
+// next signature and asks each object through your cached_intersect.
 class RayCacheGrid final : public Accelerator {
 public:
     RayCacheGrid(const Objects& objects, float lambda) : grid_(objects, lambda) {}
-    // A grid built by other means (the tests build small ones by hand).
-    explicit RayCacheGrid(Grid grid) : grid_(std::move(grid)) {}
 
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().closest(ray, range, objects, hit);  // outside the margins' reach (grid.hpp)
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;
-        ThreadCache& t = thread_cache();
-        const std::uint32_t signature = t.next();
-        const auto query = [&](const GridWalk& w, ObjectHit& best) {
-            return closest_in_cell_cached(g, w, t.cache, signature, ray, range, objects, best);
-        };
-        return grid_closest(g.shape, walk, ray, range, objects, hit, query, next_cell);
+        ThreadRayCache& t = thread_cache();
+        return remembering_closest(grid_, ray, range, objects, hit, [&] { return t.next(); },
+                                   [&](const Grid& g, const GridWalk& w, std::uint32_t signature, ObjectHit& best) {
+                                       return closest_in_cell_cached(g, w, t.cache, signature, ray, range, objects, best);
+                                   });
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const override
     {
-        if (!grid_.margins().covers(ray, range))
-            return brute_force().any(ray, range, objects);
-        const Grid& g = grid_.grid();
-        GridWalk walk = start_walk(g.shape, ray, range);
-        if (walk.missed)
-            return false;
-        ThreadCache& t = thread_cache();
-        const std::uint32_t signature = t.next();
-        ObjectHit hit;
-        const auto ask = [&](int k) { return cached_intersect(t.cache, signature, objects, k, ray, range, hit); };
-        const auto any_in = [&](const GridWalk& w) { return any_listed(g, w.p, ask); };
-        return grid_any(g.shape, walk, ray, range, objects, any_in, next_cell);
+        ThreadRayCache& t = thread_cache();
+        return remembering_any(grid_, ray, range, objects, [&] { return t.next(); },
+                               [&](std::uint32_t signature, int k, ObjectHit& hit) {
+                                   return cached_intersect(t.cache, signature, objects, k, ray, range, hit);
+                               });
     }
 
     std::size_t bytes() const override { return grid_.bytes(); }
@@ -174,27 +192,11 @@ public:
     }
     const UniformGrid& grid() const { return grid_; }
 
-    // This thread's cache and ray counter for this grid: fresh (every word 0, no signature handed
-    // out) on the thread's first query, and again when the thread last queried another grid.
-    struct ThreadCache {
-        std::uint64_t owner = 0;
-        std::uint32_t last_signature = 0;
-        RayCache cache;
-        std::uint32_t next()
-        {
-            if (++last_signature == 0) {  // the counter wrapped: no word may hold a signature handed out again
-                cache = RayCache{};
-                last_signature = 1;
-            }
-            return last_signature;
-        }
-    };
-    ThreadCache& thread_cache() const
+    // This thread's cache and counter for this grid: fresh on the thread's first query, and again
+    // when the thread last queried another grid.
+    ThreadRayCache& thread_cache() const
     {
-        thread_local ThreadCache mine;
-        if (mine.owner != id_)
-            mine = ThreadCache{id_, 0, RayCache{}};
-        return mine;
+        return this_threads<ThreadRayCache>(id_, [] { return ThreadRayCache{}; });
     }
 
 private:

@@ -6,14 +6,13 @@
 #include "07_uniform_grid/figure.hpp"
 #include "08_mailboxing/figure.hpp"
 #include "tests/ch07/agreement.hpp"
-#include "tests/grader/measure.hpp"
+#include "tests/grader/open_tiers.hpp"
 
-#include <cmath>
-#include <iomanip>
 
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::agreement;
+using rt::grader::open_exercise::fixed;
 
 namespace {
 
@@ -109,27 +108,14 @@ const CostScene cost_scenes[] = {
 };
 constexpr int cost_rays = 4096;  // seeded rays per scene (seeded_ray), closest hits
 
-// Intersection tests per closest-hit ray through `make`'s structure over a scene, on cost_rays seeded rays.
+// Intersection tests per closest-hit ray through the grid make(objects, lambda) builds over a scene,
+// on cost_rays seeded rays.
 template <class Make>
 double tests_per_ray(const CostScene& c, Make&& make)
 {
-    const NffScene nff = generated_scene(write_sticks, c.depth, c.name);
-    const LitScene scene = lit_scene(nff);
-    const Objects objects = objects_of(scene, lit_tests);
-    const std::unique_ptr<Accelerator> grid = make(objects, c.lambda);
-    Bounds box;
-    for (int k = 0; k < objects.size(); ++k)
-        box.grow(objects.bounds(k));
-    Rng rng(77, 3);
-    reset_counters();
-    int rays = 0;
-    for (int k = 0; k < cost_rays; ++k)
-        if (const std::optional<SeededRay> r = seeded_ray(rng, nff.view, box, k)) {
-            ObjectHit hit;
-            grid->closest(r->ray, r->range, objects, hit);
-            ++rays;
-        }
-    return static_cast<double>(counter(Counter::intersection_tests)) / rays;
+    return open_exercise::count_closest(generated_scene(write_sticks, c.depth, c.name), cost_rays,
+                                        [&](const Objects& objects) { return make(objects, c.lambda); })
+        .per_ray(Counter::intersection_tests);
 }
 
 double cache_tests_per_ray(const CostScene& c)
@@ -137,39 +123,14 @@ double cache_tests_per_ray(const CostScene& c)
     return tests_per_ray(c, [](const Objects& o, float lambda) { return std::make_unique<RayCacheGrid>(o, lambda); });
 }
 
-std::string fixed(double v, int digits)
-{
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(digits) << v;
-    return s.str();
-}
-
-// Your cost against the reference's: the geometric mean over the scenes of the ratio of tests per
-// ray, with each scene's figures in words for the case's message.
-double cost_ratio(std::string& words)
-{
-    double log_sum = 0.0;
-    for (const CostScene& c : cost_scenes) {
-        const double mine = cache_tests_per_ray(c);
-        log_sum += std::log(mine / c.reference);
-        words += std::string("\n  ") + c.name + ": " + fixed(mine, 2) + " tests per ray, the reference " + fixed(c.reference, 2);
-    }
-    return std::exp(log_sum / static_cast<double>(std::size(cost_scenes)));
-}
-
 // One tier: the gate, then (for a cache that passed it: only those are ranked) the cost at most
-// `tier` times the reference's.
+// `tier` times the reference's, the geometric mean over the scenes of the ratio of tests per ray.
 void check_tier(double tier)
 {
-    if (!check_gate())
-        return;
-    std::string words;
-    const double ratio = cost_ratio(words);
-    report_measure("08.4 cost", std::round(ratio * 1000.0) / 1000.0, 1.0);  // as the leaderboard shows it
-    INFO("your cache's cost (intersection tests per closest-hit ray) is " << fixed(ratio, 3)
-         << " times the reference's (the geometric mean over the scenes);" << words << "\nthis tier asks at most "
-         << fixed(tier, 2) << " times");
-    CHECK(ratio <= tier);
+    open_exercise::check_tier(
+        check_gate,
+        [](std::string& words) { return open_exercise::geometric_ratio(cost_scenes, cache_tests_per_ray, "tests per ray", words); },
+        "08.4 cost", "your cache's cost (intersection tests per closest-hit ray)", tier);
 }
 
 }  // namespace
