@@ -127,17 +127,17 @@ private:
     std::uint64_t id_ = next_grid_id();
 };
 
-// A cell's closest hit asked through a ray cache (08.4), by 07.6's rules (as 08.3 asks through the
-// mailboxes): each object the cell lists, in the range that beats `best`, kept when no farther than
-// the cell's exit. Returns whether `best` changed.
-inline bool closest_in_cell_cached(const Grid& grid, const GridWalk& walk, RayCache& cache, std::uint32_t signature,
-                                   const Ray& ray, Interval range, const Objects& objects, ObjectHit& best)
+// A cell's closest hit by 07.6's rules, each object the cell lists asked with ask(k, range, hit) (a
+// ray cache's, 08.4; the grader's check of each call) in the range that beats `best`, kept when no
+// farther than the cell's exit. Returns whether `best` changed.
+template <class Ask>
+bool closest_in_cell_asking(const Grid& grid, const GridWalk& walk, Interval range, ObjectHit& best, Ask&& ask)
 {
     const float exit = walk.cell_exit();
     bool changed = false;
     for_each_listed(grid, walk.p, [&](int k) {
         ObjectHit h;
-        if (cached_intersect(cache, signature, objects, k, ray, closer_than(range, best, k), h) && h.t <= exit)
+        if (ask(k, closer_than(range, best, k), h) && h.t <= exit)
             best = h, changed = true;
     });
     return changed;
@@ -171,7 +171,9 @@ public:
         ThreadRayCache& t = thread_cache();
         return remembering_closest(grid_, ray, range, objects, hit, [&] { return t.next(); },
                                    [&](const Grid& g, const GridWalk& w, std::uint32_t signature, ObjectHit& best) {
-                                       return closest_in_cell_cached(g, w, t.cache, signature, ray, range, objects, best);
+                                       return closest_in_cell_asking(g, w, range, best, [&](int k, Interval r, ObjectHit& h) {
+                                           return cached_intersect(t.cache, signature, objects, k, ray, r, h);
+                                       });
                                    });
     }
 

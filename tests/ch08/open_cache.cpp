@@ -16,10 +16,55 @@ using rt::grader::open_exercise::fixed;
 
 namespace {
 
-const Build cached{"the grid with your ray cache (08.4)",
-                   [](const Objects& objects, float lambda) { return std::make_unique<RayCacheGrid>(objects, lambda); }};
-
 std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
+
+std::string said(bool found, const ObjectHit& h);
+
+// The failing ray replayed, closest hit then any hit, on a copy of this thread's cache as the
+// failing queries left it (the grid's own left alone), with the next signature: each call of your
+// cached_intersect held to a fresh test of the same object in the same range. The first call that
+// answers differently, or counts other than one test or one answer, in words; empty when every call
+// kept its promise on the replay.
+std::string first_wrong_call(const RayCacheGrid& grid, const Ray& ray, Interval range, const Objects& objects)
+{
+    ThreadRayCache t = grid.thread_cache();
+    std::string wrong;
+    const auto checked = [&](std::uint32_t signature, int k, Interval r, ObjectHit& hit) {
+        ObjectHit want;
+        const bool want_found = objects.intersect(k, ray, r, want);
+        reset_counters();
+        const bool found = cached_intersect(t.cache, signature, objects, k, ray, r, hit);
+        const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+        const bool same = found == want_found && (!found || (hit.object == want.object && hit.t == want.t &&
+                                                             hit.beta == want.beta && hit.gamma == want.gamma));
+        if (wrong.empty() && (!same || tests + answers != 1)) {
+            std::ostringstream s;
+            s.precision(9);
+            s << "\n  replayed with signature " << signature << ": object " << k << " asked in (" << r.min << ", " << r.max
+              << "): your cached_intersect gave " << said(found, hit) << " after " << tests << " tests and " << answers
+              << " answers; a fresh test gives " << said(want_found, want) << " (each call: 1 test, or 0 and 1 answer)";
+            wrong = s.str();
+        }
+        return want_found ? (hit = want, true) : false;  // the replay walks on with the right answer
+    };
+    ObjectHit hit;
+    remembering_closest(grid.grid(), ray, range, objects, hit, [&] { return t.next(); },
+                        [&](const Grid& g, const GridWalk& w, std::uint32_t signature, ObjectHit& best) {
+                            return closest_in_cell_asking(g, w, range, best, [&](int k, Interval r, ObjectHit& h) {
+                                return checked(signature, k, r, h);
+                            });
+                        });
+    if (wrong.empty())
+        remembering_any(grid.grid(), ray, range, objects, [&] { return t.next(); },
+                        [&](std::uint32_t signature, int k, ObjectHit& h) { return checked(signature, k, range, h); });
+    return wrong.empty() ? "\n  replayed, every call of your cached_intersect answered as a fresh test" : wrong;
+}
+
+const Build cached{"the grid with your ray cache (08.4)",
+                   [](const Objects& objects, float lambda) { return std::make_unique<RayCacheGrid>(objects, lambda); },
+                   [](const Accelerator& built, const Ray& ray, Interval range, const Objects& objects) {
+                       return first_wrong_call(dynamic_cast<const RayCacheGrid&>(built), ray, range, objects);
+                   }};
 
 std::string said(bool found, const ObjectHit& h)
 {
