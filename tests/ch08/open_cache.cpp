@@ -77,50 +77,63 @@ std::string said(bool found, const ObjectHit& h)
     return s.str();
 }
 
-// The contract's own words on two objects of the sticks, called directly: a second call of one
-// signature answers as a fresh test would, bit for bit (beta and gamma too), counted as one test
-// then one answer; two caches are two threads (the same signature in another cache is another
-// ray: it must be tested, not answered from the first cache's memory).
+// The contract's own words, called directly on objects of sticks 1 that seeded rays hit (brute
+// force's closest). Each object k hit at t > 0 along a ray is missed along the reversed ray from
+// the same origin. Then: cache A, signature 1, the reversed ray (a miss); cache B, signature 1, the
+// ray, twice (another thread's ray with the same number: tested, a hit, then the same hit bit for
+// bit, beta and gamma too, in 1 test then at most 1 answer); cache A, signature 2, the ray (a new
+// ray: what signature 1 left must not answer). A cache that keeps anything outside RayCache, or
+// answers another signature's entry, fails here.
 bool check_calls()
 {
     const NffScene nff = generated_scene(write_sticks, 1, "sticks 1");
     const LitScene scene = lit_scene(nff);
     const Objects objects = objects_of(scene, lit_tests);
-    bool right = true;
-    for (int k = 0; k < objects.size() && k < 40; ++k) {
-        const Bounds b = objects.bounds(k);
-        const point3 at = b.centre();
-        const Ray onto{at - vec3(0.3f, 2.0f, 0.1f), glm::normalize(vec3(0.3f, 2.0f, 0.1f))};  // towards its centre
-        const Ray away{at - vec3(0.3f, 2.0f, 0.1f), glm::normalize(vec3(-0.3f, -2.0f, -0.1f))};
+    Bounds box;
+    for (int k = 0; k < objects.size(); ++k)
+        box.grow(objects.bounds(k));
+    Rng rng(5, 3);
+    int checked = 0;
+    for (int n = 0; n < 400 && checked < 30; ++n) {
+        const std::optional<SeededRay> r = seeded_ray(rng, nff.view, box, n);
+        ObjectHit first_hit;
+        if (!r || !brute_force().closest(r->ray, {0.0f, infinity}, objects, first_hit) || !(first_hit.t > 0.0f))
+            continue;
+        ++checked;
+        const int k = first_hit.object;
         const Interval range{0.0f, infinity};
-        ObjectHit want_onto, want_away;
-        const bool hits_onto = objects.intersect(k, onto, range, want_onto);
-        const bool hits_away = objects.intersect(k, away, range, want_away);
-        RayCache one, two;
-        ObjectHit first, again, other;
+        const Ray& ray = r->ray;
+        const Ray back{ray.origin, -ray.dir};
+        ObjectHit want, want_back;
+        const bool hits = objects.intersect(k, ray, range, want);
+        const bool hits_back = objects.intersect(k, back, range, want_back);
+        RayCache a, b;
+        ObjectHit got_back, got, again, later;
+        const bool f_back = cached_intersect(a, 1, objects, k, back, range, got_back);
         reset_counters();
-        const bool f1 = cached_intersect(one, 1, objects, k, onto, range, first);
-        const bool f2 = cached_intersect(one, 1, objects, k, onto, range, again);
+        const bool f = cached_intersect(b, 1, objects, k, ray, range, got);
+        const bool f_again = cached_intersect(b, 1, objects, k, ray, range, again);
         const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
-        const bool f3 = cached_intersect(two, 1, objects, k, away, range, other);
-        const auto same = [](bool fa, const ObjectHit& a, bool fb, const ObjectHit& b) {
-            return fa == fb && (!fa || (a.object == b.object && a.t == b.t && a.beta == b.beta && a.gamma == b.gamma));
+        const bool f_later = cached_intersect(a, 2, objects, k, ray, range, later);
+        const auto same = [](bool fa, const ObjectHit& x, bool fb, const ObjectHit& y) {
+            return fa == fb && (!fa || (x.object == y.object && x.t == y.t && x.beta == y.beta && x.gamma == y.gamma));
         };
-        const bool ok = same(f1, first, hits_onto, want_onto) && same(f2, again, hits_onto, want_onto) &&
-                        tests + answers == 2 && tests >= 1 && same(f3, other, hits_away, want_away);
-        INFO("object " << k << " of sticks 1, asked twice with signature 1 in one fresh cache along " << show(onto)
-                       << ", t in (0, inf), then with signature 1 in a second fresh cache (another thread) along "
-                       << show(away) << ": your cached_intersect gave " << said(f1, first) << ", then "
-                       << said(f2, again) << " (" << tests << " tests and " << answers
-                       << " answers for the two calls), then " << said(f3, other) << "; a fresh test gives "
-                       << said(hits_onto, want_onto) << " and " << said(hits_away, want_away)
-                       << ": each call answers as the test would, bit for bit, with 1 test then at most 1 answer");
+        const bool ok = same(f_back, got_back, hits_back, want_back) && same(f, got, hits, want) &&
+                        same(f_again, again, hits, want) && tests + answers == 2 && tests >= 1 &&
+                        same(f_later, later, hits, want);
+        INFO("object " << k << " of sticks 1 (t in (0, inf) each time): cache A, signature 1, along " << show(back)
+                       << ": your cached_intersect gave " << said(f_back, got_back) << ", a fresh test "
+                       << said(hits_back, want_back) << ". Cache B (another thread), signature 1, along " << show(ray)
+                       << ", twice: " << said(f, got) << ", then " << said(f_again, again) << ", after " << tests
+                       << " tests and " << answers << " answers; a fresh test gives " << said(hits, want)
+                       << " (1 test, then 1 test or 1 answer). Cache A, signature 2 (a new ray), along the same: "
+                       << said(f_later, later) << ". Each call answers as a fresh test would, bit for bit; nothing "
+                       << "is kept outside the cache, and no entry answers for another signature");
         CHECK(ok);
-        right = right && ok;
         if (!ok)
-            break;
+            return false;
     }
-    return right;
+    return true;
 }
 
 // The gate: 08.A's scenes and rays, ties, a huge floor, far away; and the calls above. Whether
