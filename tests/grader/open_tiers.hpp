@@ -5,9 +5,11 @@
 #pragma once
 
 #include "tests/ch07/agreement.hpp"
+#include "tests/grader/graded.hpp"
 #include "tests/grader/measure.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <iomanip>
 #include <iterator>
 #include <memory>
@@ -21,6 +23,27 @@ inline std::string fixed(double v, int digits)
     std::ostringstream s;
     s << std::fixed << std::setprecision(digits) << v;
     return s.str();
+}
+
+// One generated scene of an open exercise's gate: its generator, depth and name, and the seeded rays
+// asked a density (agreement::check_scene).
+struct GateScene {
+    void (*write)(std::ostream&, int);
+    int depth;
+    const char* name;
+    int rays;
+};
+
+// The agreement half of an open exercise's gate: the kit's scene files (`file_rays` rays a density),
+// each generated scene, and the hard cases (ties, a huge floor, far away), every ray answered as
+// brute force does, closest and any hit. Whether all agreed (each disagreement a failed check that
+// names its first ray).
+inline bool agrees_with_brute_force(const agreement::Build& build, int file_rays, std::initializer_list<GateScene> scenes)
+{
+    bool passed = agreement::check_scene_files(build, RT_NFF_SCENES_DIR, file_rays);
+    for (const GateScene& g : scenes)
+        passed = agreement::check_scene(build, generated_scene(g.write, g.depth, g.name), g.rays) && passed;
+    return agreement::check_hard_cases(build) && passed;
 }
 
 // The counts of `rays` closest-hit queries (agreement::seeded_ray, seed 77: from the view's eye and
@@ -86,3 +109,11 @@ void check_tier(Gate&& gate, Ratio&& ratio_of, const std::string& measure, const
 }
 
 }  // namespace rt::grader::open_exercise
+
+// An open exercise's three graded cases, one a tier (at most 2, 1.5 and 1.02 times the reference's
+// cost: the points add up by tier), each worth `points`: `what` opens each case's name ("build_bvh
+// (open): a correct tree"), `unit` ends it ("" or " tests"), and check(tier) grades it.
+#define OPEN_EXERCISE_TIERS(what, unit, number, points, check)                                     \
+    GRADED_TEST(what " costing at most 2 times the reference's" unit, number, points) { check(2.0); }   \
+    GRADED_TEST(what " costing at most 1.5 times the reference's" unit, number, points) { check(1.5); } \
+    GRADED_TEST(what " costing at most 1.02 times the reference's" unit, number, points) { check(1.02); }
