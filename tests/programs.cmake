@@ -307,6 +307,16 @@ rt_same_render(08_mailboxing.mailboxes_as_brute_tree 08_mailboxing FIRST --accel
 rt_expect_exit(08_mailboxing.figure_stats 08_mailboxing 0
   "rays_primary=600\n.*accel=grid-mailbox\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=128032\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_stats.png")
+# Your ray cache (08.4, here the reference's) renders the figure too: the same picture as the
+# mailboxes, 1 KB a thread.
+rt_same_render(08_mailboxing.cache_as_mailboxes_sticks 08_mailboxing FIRST --accel grid-mailbox SECOND --mailbox cache
+  ARGS --width 64 --lambda 8 GENERATE sticks --depth 2)
+rt_expect_exit(08_mailboxing.cache_stats 08_mailboxing 0
+  "accel=grid-mailbox\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=1024\n"
+  --mailbox cache --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_cache_stats.png")
+rt_expect_exit(08_mailboxing.unknown_mailbox 08_mailboxing 2 "--mailbox takes object or cache, got 'ray'" --mailbox ray)
+rt_expect_exit(08_mailboxing.mailbox_with_grid 08_mailboxing 2 "--mailbox shapes grid-mailbox; it does not apply to --accel grid"
+  --accel grid --mailbox cache)
 rt_expect_exit(08_mailboxing.no_answers_without_mailboxes 08_mailboxing 0 "tests_answered_by_mailboxes=0\n"
   --width 30 --height 20 --stats --accel grid --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_off.png")
 rt_expect_exit(08_mailboxing.unknown_accel 08_mailboxing 2 "--accel takes brute, grid or grid-mailbox, got 'yes'" --accel yes)

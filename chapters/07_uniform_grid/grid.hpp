@@ -570,6 +570,14 @@ bool grid_any(const GridShape& shape, GridWalk& walk, const Ray& ray, Interval r
     return walk_cells(walk, any_in, next) || (walk_cut_short(shape, walk) && brute_force().any(ray, range, objects));
 }
 
+// Each object a grid's cell p lists, in the cell's order, handed to f(k).
+template <class F>
+void for_each_listed(const Grid& grid, int p, F&& f)
+{
+    for (std::uint32_t i = grid.cell_start[p]; i < grid.cell_start[p + 1]; ++i)
+        f(static_cast<int>(grid.object_index[i]));
+}
+
 // Whether any object a grid's cell p lists is hit, each asked with test(k): the any-hit cell of
 // every grid that lists its objects in two flat arrays.
 template <class Test>

@@ -15,7 +15,9 @@
 
 #include "07_uniform_grid/07_uniform_grid.hpp"
 
+#include <array>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace rt {
@@ -119,5 +121,61 @@ bool mailboxed_intersect(Mailboxes& m, std::uint32_t signature, const Objects& o
 // DETAIL END
 bool closest_in_cell_mailboxed(const Grid& grid, const GridWalk& walk, Mailboxes& m, std::uint32_t signature,
                                const Ray& ray, Interval range, const Objects& objects, ObjectHit& best);
+
+// The memory budget of EXERCISE 08.4: one thread's ray cache, 1 KB (16 cache lines), whatever the
+// scene's size (the mailboxes above take 16 bytes per object per thread: 128 KB for 8000 objects).
+constexpr std::size_t ray_cache_bytes = 1024;
+
+// One thread's ray cache (08.4): 256 words that are yours to lay out. The grid with a ray cache
+// (mailbox_grid.hpp's RayCacheGrid, given) keeps one per thread, every word 0 on the thread's
+// first ray and again when its ray counter wraps; from one call to the next it keeps exactly what
+// you left in it.
+struct RayCache {
+    std::array<std::uint32_t, ray_cache_bytes / sizeof(std::uint32_t)> word{};
+};
+static_assert(sizeof(RayCache) == ray_cache_bytes, "the budget is the cache's size");
+
+// A float in a word and back, bit for bit (a t, a beta, a gamma kept in the cache).
+inline std::uint32_t bits_of(float f)
+{
+    std::uint32_t w;
+    std::memcpy(&w, &f, sizeof w);
+    return w;
+}
+inline float float_of(std::uint32_t w)
+{
+    float f;
+    std::memcpy(&f, &w, sizeof f);
+    return f;
+}
+
+// EXERCISE 08.4 (open): 08.2's promise within a fixed budget: whether the ray whose signature is
+// `signature` hits object k strictly inside `range`, with `hit` filled in, remembering in `cache`
+// (1 KB, RayCache) what this ray's earlier tests found, so that a later cell listing k again is
+// answered without a test. Any design: which objects to keep, how to find them, what to store.
+// The lesson's section "Mailboxes in 1 KB (EXERCISE 08.4, open)" poses the problem.
+//  - Correct (the gate): every call answers as a fresh test would, objects.intersect(k, ray,
+//    range, hit): the same verdict and, for a hit, the same t, object = k, beta and gamma, bit for
+//    bit. Each call either makes that one counted test, or makes none and counts one answer,
+//    count(Counter::mailbox_hits). Within one signature (one query, one ray) the range only
+//    shrinks, as in 08.2. Signatures come from the grid's counter, 1 to 2^32 - 1, each handed out
+//    once between two resets of the cache (every word 0): what an earlier signature left must
+//    never answer for this one. All you keep lives in `cache`: two caches are two threads, and
+//    neither sees the other's rays. The grid with your cache (RayCacheGrid) must answer every ray
+//    as brute force does, closest and any hit (the kit's scenes, generated ones, ties, a huge
+//    floor, far away); a wrong answer scores 0 for the whole exercise, and the grader names the
+//    first call or ray answered differently.
+//  - Cheap (the score): intersection tests per closest-hit ray through RayCacheGrid (answers from
+//    the cache are free), counted on seeded rays over three of the kit's generated scenes of long
+//    sticks (the lesson lists them). Your cost is the geometric mean over the scenes of your tests
+//    per ray over the reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2,
+//    one third; beyond 2, none (a cache that remembers nothing costs 3.2). It is what the class
+//    leaderboard ranks, lower first. Counts, never time.
+//  - Memory: RayCache and nothing else (no static, global or thread_local of your own).
+// Example: with signature 7 in a fresh cache, object 3 missed in (0, infinity) makes 1 test; asked
+// again with signature 7, it may be answered (no hit, 0 tests, 1 answer) or tested again (1 test):
+// both are correct, the first is cheaper. Asked with signature 8, it must be tested.
+bool cached_intersect(RayCache& cache, std::uint32_t signature, const Objects& objects, int k, const Ray& ray,
+                      Interval range, ObjectHit& hit);
 
 }  // namespace rt

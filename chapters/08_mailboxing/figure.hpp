@@ -15,12 +15,16 @@ constexpr int figure_sticks_depth = 5;  // 8000 sticks
 
 inline NffScene figure_scene() { return generated_scene(write_sticks, figure_sticks_depth, "sticks, depth 5"); }
 
-// Chapter 07's structures and the grid with mailboxes (programs/structures.hpp).
+// Chapter 07's structures and the grid with mailboxes (programs/structures.hpp): a mailbox per object
+// and thread, or with --mailbox cache your ray cache of 1 KB a thread (08.4, RayCacheGrid).
 inline Structures structures()
 {
     return followed_by(ch07::structures(),
                        {{"grid-mailbox", "the uniform grid with a mailbox per object and thread", 8,
-                         ch07::default_lambda, {"--lambda"}, [](const Objects& o, const StructureTuning& t) {
+                         ch07::default_lambda, {"--lambda", "--mailbox"},
+                         [](const Objects& o, const StructureTuning& t) -> std::unique_ptr<Accelerator> {
+                             if (t.mailbox == "cache")
+                                 return std::make_unique<RayCacheGrid>(o, t.lambda);  // your 08.4
                              return std::make_unique<MailboxGrid>(o, t.lambda);
                          }}});
 }

@@ -200,10 +200,20 @@ int main(int argc, char** argv)
 {
     return run_program("08_mailboxing", [&] {
         Options o;
+        std::string& mailbox = o.structure.tuning.mailbox;
+        const auto mailbox_option = [&](CommandLine& cli) {
+            cli.option("--mailbox", mailbox,
+                       "where grid-mailbox remembers what a ray tested: object (a mailbox per object and thread, "
+                       "the default) or cache (your ray cache, 1 KB a thread, 08.4)");
+        };
+        const auto check_mailbox = [&](const CommandLine& cli) {
+            if (cli.given("--mailbox") && mailbox != "object" && mailbox != "cache")
+                throw InputError("--mailbox takes object or cache, got '" + mailbox + "'");
+        };
         return scene_program_main(
             argc, argv, o, scene_program(o),
             {"Mailboxing: an object met again in a later cell is answered from its mailbox.",
              "measure the tests and time the mailboxes save, by density and ray kind"},
-            1e5f, {}, {}, [&](const CommandLine& cli) { sweep(o, cli); });
+            1e5f, mailbox_option, check_mailbox, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

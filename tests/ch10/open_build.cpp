@@ -8,14 +8,13 @@
 #include "tests/ch07/agreement.hpp"
 #include "tests/ch10/bvh_suspect.hpp"
 #include "tests/ch10/two_leaves.hpp"
-#include "tests/grader/measure.hpp"
+#include "tests/grader/open_tiers.hpp"
 
-#include <cmath>
-#include <iomanip>
 
 using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::agreement;
+using rt::grader::open_exercise::fixed;
 
 namespace {
 
@@ -82,11 +81,11 @@ bool check_gate()
          "10.7 case");
     bool passed = check_counting();
     passed = check_edge_trees() && passed;
-    passed = check_scene_files(open_build, RT_NFF_SCENES_DIR, 200) && passed;
-    passed = check_scene(open_build, generated_scene(write_stadium, 2, "stadium 2"), 200) && passed;
-    passed = check_scene(open_build, generated_scene(write_sticks, 1, "sticks 1"), 200) && passed;
-    passed = check_scene(open_build, generated_scene(write_tree, 3, "tree 3"), 200) && passed;
-    return check_hard_cases(open_build) && passed;
+    return open_exercise::agrees_with_brute_force(open_build, 200,
+                                                  {{write_stadium, 2, "stadium 2", 200},
+                                                   {write_sticks, 1, "sticks 1", 200},
+                                                   {write_tree, 3, "tree 3", 200}}) &&
+           passed;
 }
 
 // The scenes 10.7's cost is measured on (the contract's "five of the kit's generated scenes"), with
@@ -110,79 +109,30 @@ constexpr int cost_rays = 4096;  // seeded rays per scene (seeded_ray), closest 
 // sah_traversal_cost plus objects tested times sah_intersect_cost, over cost_rays seeded rays.
 double cost_per_ray(const CostScene& c, const BvhSettings& settings)
 {
-    const NffScene nff = generated_scene(c.write, c.depth, c.name);
-    const LitScene scene = lit_scene(nff);
-    const Objects objects = objects_of(scene, lit_tests);
-    const BvhAccel tree(objects, settings);
-    Bounds box;
-    for (int k = 0; k < objects.size(); ++k)
-        box.grow(objects.bounds(k));
-    Rng rng(77, 3);
-    reset_counters();
-    int rays = 0;
-    for (int k = 0; k < cost_rays; ++k)
-        if (const std::optional<SeededRay> r = seeded_ray(rng, nff.view, box, k)) {
-            ObjectHit hit;
-            tree.closest(r->ray, r->range, objects, hit);
-            ++rays;
-        }
-    const Counts counts = total_counts();
-    const double nodes = static_cast<double>(counts[static_cast<size_t>(Counter::nodes_visited)]);
-    const double tests = static_cast<double>(counts[static_cast<size_t>(Counter::intersection_tests)]);
-    return (nodes * sah_traversal_cost + tests * sah_intersect_cost) / rays;
-}
-
-std::string fixed(double v, int digits)
-{
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(digits) << v;
-    return s.str();
-}
-
-// Your cost against the reference's: the geometric mean over the scenes of the ratio of costs per
-// ray, with each scene's figures in words for the case's message.
-double cost_ratio(std::string& words)
-{
-    double log_sum = 0.0;
-    for (const CostScene& c : cost_scenes) {
-        const double mine = cost_per_ray(c, open_settings());
-        log_sum += std::log(mine / c.reference);
-        words += std::string("\n  ") + c.name + ": " + fixed(mine, 2) + " per ray, the reference " + fixed(c.reference, 2);
-    }
-    return std::exp(log_sum / static_cast<double>(std::size(cost_scenes)));
+    const open_exercise::Counted n = open_exercise::count_closest(
+        generated_scene(c.write, c.depth, c.name), cost_rays,
+        [&](const Objects& objects) { return std::make_unique<BvhAccel>(objects, settings); });
+    return n.per_ray(Counter::nodes_visited) * sah_traversal_cost + n.per_ray(Counter::intersection_tests) * sah_intersect_cost;
 }
 
 // One tier: the gate, then (for a tree that passed it: only those are ranked) the cost at most
-// `tier` times the reference's.
+// `tier` times the reference's, the geometric mean over the scenes of the ratio of costs per ray.
 void check_tier(double tier)
 {
-    if (!check_gate())
-        return;
-    std::string words;
-    const double ratio = cost_ratio(words);
-    report_measure("10.7 cost", std::round(ratio * 1000.0) / 1000.0, 1.0);  // as the leaderboard shows it
-    INFO("your tree's cost (nodes visited / 8 + objects tested, per closest-hit ray) is " << fixed(ratio, 3)
-         << " times the reference's (the geometric mean over the scenes);" << words << "\nthis tier asks at most "
-         << fixed(tier, 2) << " times");
-    CHECK(ratio <= tier);
+    open_exercise::check_tier(
+        check_gate,
+        [](std::string& words) {
+            return open_exercise::geometric_ratio(cost_scenes, [](const CostScene& c) { return cost_per_ray(c, open_settings()); },
+                                         "per ray", words);
+        },
+        "10.7 cost", "your tree's cost (nodes visited / 8 + objects tested, per closest-hit ray)", tier);
 }
 
 }  // namespace
 
-GRADED_TEST("build_bvh (open): a correct tree costing at most 2 times the reference's", "10.7", 4)
-{
-    check_tier(2.0);
-}
-
-GRADED_TEST("build_bvh (open): a correct tree costing at most 1.5 times the reference's", "10.7", 4)
-{
-    check_tier(1.5);
-}
-
-GRADED_TEST("build_bvh (open): a correct tree costing at most 1.02 times the reference's", "10.7", 4)
-{
-    check_tier(1.02);
-}
+// The graded cases: "build_bvh (open): a correct tree costing at most 2 times the reference's", the same at most 1.5
+// times and at most 1.02 times (tests/grader/open_tiers.hpp).
+OPEN_EXERCISE_TIERS("build_bvh (open): a correct tree", "", "10.7", 4, check_tier)
 
 // The kit's own check (not graded; ch10.open_reference_costs runs it on the solutions): the
 // reference costs above are what the reference build measures now, and the lesson's other builds.
