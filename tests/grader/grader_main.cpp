@@ -191,6 +191,7 @@ public:
             current_.measure = measured_now->name;
             current_.measured = measured_now->value;
             current_.reference = measured_now->reference;
+            current_.measure_detail = measured_now->detail;
         }
         const bool passed = stats.totals.assertions.failed == 0 && stats.totals.assertions.passed > 0 &&
                             !rests_on_earlier_stub(current_);

@@ -102,7 +102,7 @@ void check_tier(Gate&& gate, Ratio&& ratio_of, const std::string& measure, const
         return;
     std::string words;
     const double ratio = ratio_of(words);
-    report_measure(measure, std::round(ratio * 1000.0) / 1000.0, 1.0);
+    report_measure(measure, std::round(ratio * 1000.0) / 1000.0, 1.0, words);
     INFO(what << " is " << fixed(ratio, 3) << " times the reference's (the geometric mean over the scenes);" << words
               << "\nthis tier asks at most " << fixed(tier, 2) << " times");
     CHECK(ratio <= tier);

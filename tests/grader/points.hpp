@@ -44,6 +44,9 @@ struct CaseResult {
     // its name ("10.7 cost"; empty: none), the student's value and the reference solution's.
     std::string measure;
     double measured = 0.0, reference = 0.0;
+    // Its figures scene by scene (the grader's console prints them, passed or not; not in the results
+    // file: a student improving a design that already passes needs them, the gradebook does not).
+    std::string measure_detail;
 
     bool passed() const { return status == CaseStatus::passed; }
 };
