@@ -115,10 +115,6 @@ bool cached_intersect(RayCache& cache, std::uint32_t signature, const Objects& o
     // Lesson: "Mailboxes in 1 KB (EXERCISE 08.4, open)".
     // Stuck? hint 08.4 (tier 1: the idea; 2: the trap; 3: the walk-through)
     // SOLUTION BEGIN
-    // The reference: a direct-mapped cache with the signature trick once for the whole cache. Word 0
-    // holds the signature its entries belong to (words 1-3 unused); 15 entries of 4 words follow,
-    // object k in entry k mod 15: {k + 1 (0: empty), t (infinity: a miss), beta, gamma}. A new
-    // signature empties every entry; an object that finds its entry taken by another replaces it.
     // The reference: a set-associative cache of the objects this ray missed, with 08.1's signature
     // trick once per set. 32 sets of 8 words, object k in set k mod 32: {the signature the set's
     // keys belong to, the next way to fill, 6 keys of k + 1}. A set holding another ray's signature

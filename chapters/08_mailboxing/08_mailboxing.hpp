@@ -156,8 +156,9 @@ inline float float_of(std::uint32_t w)
 // The lesson's section "Mailboxes in 1 KB (EXERCISE 08.4, open)" poses the problem.
 //  - Correct (the gate): every call answers as a fresh test would, objects.intersect(k, ray,
 //    range, hit): the same verdict and, for a hit, the same t, object = k, beta and gamma, bit for
-//    bit. Each call either makes that one counted test, or makes none and counts one answer,
-//    count(Counter::mailbox_hits). Within one signature (one query, one ray) the range only
+//    bit. Each call either makes that one counted test, or, for an object this signature already
+//    tested, makes none and counts one answer, count(Counter::mailbox_hits): an answer comes from
+//    what the cache remembers, never from a guess or a cheaper test. Within one signature (one query, one ray) the range only
 //    shrinks, as in 08.2. Signatures come from the grid's counter, 1 to 2^32 - 1, each handed out
 //    once between two resets of the cache (every word 0): what an earlier signature left must
 //    never answer for this one. All you keep lives in `cache`: two caches are two threads, and

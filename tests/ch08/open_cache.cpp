@@ -118,9 +118,19 @@ bool check_calls()
         const auto same = [](bool fa, const ObjectHit& x, bool fb, const ObjectHit& y) {
             return fa == fb && (!fa || (x.object == y.object && x.t == y.t && x.beta == y.beta && x.gamma == y.gamma));
         };
+        // An object this ray misses, asked first in a fresh cache: no earlier test of this ray can
+        // answer for it, so it is tested (a call that answers it unasked, by a box or a guess, costs
+        // nothing the cost would count).
+        const int missed = (k + 1) % objects.size();
+        ObjectHit unused;
+        RayCache c;
+        reset_counters();
+        const bool f_missed = cached_intersect(c, 3, objects, missed, ray, range, unused);
+        const std::uint64_t missed_tests = counter(Counter::intersection_tests);
+        const bool missed_ok = objects.intersect(missed, ray, range, unused) ? true : (!f_missed && missed_tests == 1);
         const bool ok = same(f_back, got_back, hits_back, want_back) && same(f, got, hits, want) &&
                         same(f_again, again, hits, want) && tests + answers == 2 && tests >= 1 &&
-                        same(f_later, later, hits, want);
+                        same(f_later, later, hits, want) && missed_ok;
         INFO("object " << k << " of sticks 1 (t in (0, inf) each time): cache A, signature 1, along " << show(back)
                        << ": your cached_intersect gave " << said(f_back, got_back) << ", a fresh test "
                        << said(hits_back, want_back) << ". Cache B (another thread), signature 1, along " << show(ray)
@@ -128,7 +138,10 @@ bool check_calls()
                        << " tests and " << answers << " answers; a fresh test gives " << said(hits, want)
                        << " (1 test, then 1 test or 1 answer). Cache A, signature 2 (a new ray), along the same: "
                        << said(f_later, later) << ". Each call answers as a fresh test would, bit for bit; nothing "
-                       << "is kept outside the cache, and no entry answers for another signature");
+                       << "is kept outside the cache, and no entry answers for another signature. Cache C, "
+                       << "signature 3, object " << missed << " (which this ray misses), asked first: "
+                       << (f_missed ? "a hit" : "no hit") << " after " << missed_tests
+                       << " tests; a call with nothing of this ray's to answer from is tested (1 test)");
         CHECK(ok);
         if (!ok)
             return false;

@@ -84,6 +84,26 @@ TEST_CASE("a results file keeps a case's measure, and a line without one still r
     std::remove(path.c_str());
 }
 
+TEST_CASE("the points table prints an open exercise's figures scene by scene, read back from the results file", "[grader]")
+{
+    // check_NN's table comes from grade_report, which reads the results file: a student whose design
+    // passes every tier sees the figures only if they survive the round trip.
+    const std::string path = "leaderboard_detail_test.results";
+    CaseResult measured = tier(4, true, 0.942);
+    measured.measure_detail = "\n  teapot in a stadium 4: 3.70 per ray, the reference 3.93\n  sticks 3: 13.1 per ray, the reference 13.97";
+    REQUIRE(rt::grader::write_results(path, {plain("10.1"), measured}));
+    std::vector<CaseResult> read;
+    REQUIRE(rt::grader::read_results(path, read));
+    REQUIRE(read.size() == 2);
+    CHECK(read[1].measure_detail == measured.measure_detail);
+    std::ostringstream table;
+    rt::grader::print_points_table(table, rt::grader::summarize(read), read);
+    INFO(table.str());
+    CHECK(table.str().find("10.7 cost: 0.942 (the reference: 1") != std::string::npos);
+    CHECK(table.str().find("\n    teapot in a stadium 4: 3.70 per ray, the reference 3.93\n    sticks 3:") != std::string::npos);
+    std::remove(path.c_str());
+}
+
 TEST_CASE("results.json carries Gradescope's leaderboard: each measure once, in ascending order", "[grader]")
 {
     const std::string path = "leaderboard_test.json";

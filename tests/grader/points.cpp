@@ -241,7 +241,8 @@ static void write_line(std::ostream& out, const CaseResult& r)
     out << escape_line(r.number) << '\t' << r.max_score << '\t' << r.score << '\t' << escape_line(r.name) << '\t'
         << escape_line(tidy_output(r.output)) << '\t' << escape_line(r.stubs) << '\t' << status_word(r.status);
     if (!r.measure.empty())
-        out << '\t' << escape_line(r.measure) << '\t' << number_text(r.measured) << '\t' << number_text(r.reference);
+        out << '\t' << escape_line(r.measure) << '\t' << number_text(r.measured) << '\t' << number_text(r.reference)
+            << '\t' << escape_line(r.measure_detail);
     out << '\n';
 }
 
@@ -308,6 +309,7 @@ bool read_results(const std::string& path, std::vector<CaseResult>& results)
             r.measure = fields[7];
             r.measured = std::strtod(fields[8].c_str(), nullptr);
             r.reference = std::strtod(fields[9].c_str(), nullptr);
+            r.measure_detail = fields.size() > 10 ? fields[10] : "";
         }
         results.push_back(r);
     }

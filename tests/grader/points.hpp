@@ -44,8 +44,8 @@ struct CaseResult {
     // its name ("10.7 cost"; empty: none), the student's value and the reference solution's.
     std::string measure;
     double measured = 0.0, reference = 0.0;
-    // Its figures scene by scene (the grader's console prints them, passed or not; not in the results
-    // file: a student improving a design that already passes needs them, the gradebook does not).
+    // Its figures scene by scene, which the points table prints under the measure, passed or not: a
+    // student improving a design that already passes every tier needs them.
     std::string measure_detail;
 
     bool passed() const { return status == CaseStatus::passed; }
@@ -87,7 +87,7 @@ std::string tidy_output(std::string output);
 // added) reads as passed when its score is whole and failed otherwise, an NN.build line as
 // does_not_compile; a reader that knows only the first six fields still reads this one.
 // Three more fields when the case measured something: the measure's name, the value and the
-// reference's.
+// reference's; a fourth, its figures scene by scene, for check_NN's table (grade_report).
 bool write_results(const std::string& path, const std::vector<CaseResult>& results);
 bool append_result(const std::string& path, const CaseResult& result);
 bool read_results(const std::string& path, std::vector<CaseResult>& results);
