@@ -267,18 +267,19 @@ inline Margins margins_of(const Objects& objects)
 // The seam every structure of chapters 07-10 answers through: a ray its margins cover (Margins::covers)
 // gets the structure's own answer, any other ray brute force's, so no structure can forget the rays
 // its margins promise nothing for. A structure sets margins_ at its build and gives closest_covered
-// and any_covered; one that refuses more rays (the hierarchy of grids) says so in answers.
+// and any_covered. The check is not virtual, so it is inlined into each query: behind a virtual call
+// it cost 64 instructions a query against 48 (callgrind, the 4-wide BVH on the pyramid: about 1%).
 class MarginedAccelerator : public Accelerator {
 public:
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const final
     {
-        return answers(ray, range) ? closest_covered(ray, range, objects, hit)
-                                   : brute_force().closest(ray, range, objects, hit);
+        return margins_.covers(ray, range) ? closest_covered(ray, range, objects, hit)
+                                           : brute_force().closest(ray, range, objects, hit);
     }
 
     bool any(const Ray& ray, Interval range, const Objects& objects) const final
     {
-        return answers(ray, range) ? any_covered(ray, range, objects) : brute_force().any(ray, range, objects);
+        return margins_.covers(ray, range) ? any_covered(ray, range, objects) : brute_force().any(ray, range, objects);
     }
 
     const Margins& margins() const { return margins_; }
@@ -287,7 +288,6 @@ protected:
     MarginedAccelerator() = default;  // margins that reach everywhere: the tests' grids built by hand
     explicit MarginedAccelerator(const Margins& margins) : margins_(margins) {}
 
-    virtual bool answers(const Ray& ray, Interval range) const { return margins_.covers(ray, range); }
     virtual bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const = 0;
     virtual bool any_covered(const Ray& ray, Interval range, const Objects& objects) const = 0;
 

@@ -77,15 +77,13 @@ public:
     static constexpr int max_hgrid_depth = 8;
 
 private:
-    // Besides the rays the margins leave (grid.hpp), those along which the finest cells are narrower
-    // than t's steps: both get brute force's answer.
-    bool answers(const Ray& ray, Interval range) const override
-    {
-        return margins_.covers(ray, range) && !cells_finer_than_t(ray, range);
-    }
-
+    // Besides the rays the margins leave (MarginedAccelerator, grid.hpp), those along which the
+    // finest cells are narrower than t's steps get brute force's answer: a rule of this structure's
+    // own, so it stays here.
     bool closest_covered(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const override
     {
+        if (cells_finer_than_t(ray, range))
+            return brute_force().closest(ray, range, objects, hit);
         ObjectHit best;
         if (!hgrid_closest(h_, 0, ray, range, range, objects, best))
             return false;
@@ -95,6 +93,8 @@ private:
 
     bool any_covered(const Ray& ray, Interval range, const Objects& objects) const override
     {
+        if (cells_finer_than_t(ray, range))
+            return brute_force().any(ray, range, objects);
         return any_in(0, ray, range, range, objects);
     }
 
