@@ -168,8 +168,8 @@ inline bool inside(const Bounds& b, const Bounds& in)
 // wide box is covered for those objects; it is covered for the bulk's too when it passes the reach
 // farther from them than the rounding its hits there would carry (covers). Every structure of chapters
 // 07-10 grows its objects' boxes by these, and answers a ray they do not cover with brute force
-// (MarginedAccelerator, below). The
-// default reaches everywhere: the margins of a grid built by hand (the tests') are never asked.
+// (MarginedAccelerator, below). The default reaches everywhere: the margins of a grid built by hand
+// (the tests') are never asked.
 struct Margins {
     Bounds reach{point3(-infinity), point3(infinity)};
     Bounds wide{point3(-infinity), point3(infinity)};
@@ -267,8 +267,7 @@ inline Margins margins_of(const Objects& objects)
 // The seam every structure of chapters 07-10 answers through: a ray its margins cover (Margins::covers)
 // gets the structure's own answer, any other ray brute force's, so no structure can forget the rays
 // its margins promise nothing for. A structure sets margins_ at its build and gives closest_covered
-// and any_covered. The check is not virtual, so it is inlined into each query: behind a virtual call
-// it cost 64 instructions a query against 48 (callgrind, the 4-wide BVH on the pyramid: about 1%).
+// and any_covered. The check is not virtual, so that it inlines into every query.
 class MarginedAccelerator : public Accelerator {
 public:
     bool closest(const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit) const final

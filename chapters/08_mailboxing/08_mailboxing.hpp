@@ -170,8 +170,8 @@ inline float float_of(std::uint32_t w)
 //    the cache are free), counted on seeded rays over three of the kit's generated scenes of long
 //    sticks (the lesson lists them). Your cost is the geometric mean over the scenes of your tests
 //    per ray over the reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2,
-//    one third; beyond 2, none (a cache that remembers nothing costs 3.2). It is what the class
-//    leaderboard ranks, lower first. Counts, never time.
+//    one third; beyond 2, none (the lesson's table gives what simpler caches cost). It is what the
+//    class leaderboard ranks, lower first. Counts, never time.
 //  - Memory: RayCache and nothing else (no static, global or thread_local of your own).
 // Example: with signature 7 in a fresh cache, object 3 missed in (0, infinity) makes 1 test; asked
 // again with signature 7, it may be answered (no hit, 0 tests, 1 answer) or tested again (1 test):

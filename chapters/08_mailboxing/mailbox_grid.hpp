@@ -41,9 +41,9 @@ State& this_threads(std::uint64_t grid, Make&& make)
 }
 
 // The walk of a grid that remembers what each ray tested (the mailboxes, the ray cache), for a ray
-// its margins cover (MarginedAccelerator, grid.hpp): a ray that meets no cell takes no signature; otherwise
-// begin() hands out the ray's signature, and each cell is asked with cell(grid, walk, signature,
-// best) for the closest hit, each listed object with ask(signature, k, hit) for any hit.
+// its margins cover (MarginedAccelerator, grid.hpp): a ray that meets no cell takes no signature;
+// otherwise begin() hands out the ray's signature, and each cell is asked with cell(grid, walk,
+// signature, best) for the closest hit, each listed object with ask(signature, k, hit) for any hit.
 template <class Begin, class Cell>
 bool remembering_closest(const UniformGrid& u, const Ray& ray, Interval range, const Objects& objects, ObjectHit& hit,
                          Begin&& begin, Cell&& cell)

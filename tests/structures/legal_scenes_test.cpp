@@ -489,12 +489,12 @@ TEST_CASE("one flat triangle 2e6 across over 20,000 triangles 5e-3 across costs 
     // small triangles were 2^-20 of 1e6, about 0.95). The grid and the hashed grid are held to
     // the default bound only: their cells are 7,000 wide, a boundary runs through the cluster at x = 0
     // and z = 0, and 07.2 and 07.4 place boundaries in float, so each object within 4 roundings of 2e6
-    // (0.48) of one is listed on both sides, and a ray crossing both tests it twice. On these rays
-    // (spread wide, many miss the cluster) they test 0.78 times brute force's objects; on the
-    // benchmark's 64 x 64 primary rays of this view (--scene), 2.05 times, and the hierarchy of grids,
-    // whose root grid is the plain one, 1.33 times. The grid
-    // with mailboxes tests it once (chapter 08's lesson); sorting it apart would take 07.2 and 07.4 in
-    // double (chapter 07's lesson, "The grid's own cells round too").
+    // (0.48) of one is listed on both sides, and a ray crossing both tests it twice. On these rays,
+    // spread wide, many miss the cluster and they stay under brute force's count; on rays that all
+    // cross it they test about twice its objects, and the hierarchy of grids (whose root grid is the
+    // plain one) more than once. The grid with mailboxes tests each once (chapter 08's lesson);
+    // sorting the cluster apart would take 07.2 and 07.4 in double (chapter 07's lesson, "The grid's
+    // own cells round too").
     LitScene huge = with_material();
     huge.add_triangle({{-1e6f, 0, 1e6f}, {1e6f, 0, 1e6f}, {0, 0, -1e6f}}, 0);
     for (int i = 0; i < 142; ++i)
