@@ -6,7 +6,8 @@
 #
 # Optional: -D BUILD_DIR=... (default build/batch), -D GRADEBOOK=... (default BUILD_DIR/gradebook.csv),
 # -D EXERCISES=... (default exercises.csv beside the gradebook), -D CHAPTERS="01;02" (default: every
-# chapter), -D GENERATOR="Visual Studio 17 2022" (default: Ninja where it is installed, else CMake's
+# chapter), -D OPEN_EXERCISES="10.7" (the open exercises assigned: all, the default, none, or a list;
+# tests/open_exercises.cmake), -D GENERATOR="Visual Studio 17 2022" (default: Ninja where it is installed, else CMake's
 # default for the platform).
 # One build folder serves every student: switching RT_EXERCISES_DIR rebuilds only the exercises.
 # A student whose chapter is missing or does not compile scores 0 there, with every case of that
@@ -33,6 +34,8 @@ endif()
 if(NOT LEADERBOARD)
   set(LEADERBOARD names)
 endif()
+include("${source_dir}/tests/open_exercises.cmake")
+rt_open_assigned(assigned_open "${OPEN_EXERCISES}" "${source_dir}/tests" "grade_batch: OPEN_EXERCISES")
 if(NOT LEADERBOARD MATCHES "^(names|pseudonyms)$")
   message(FATAL_ERROR "grade_batch: LEADERBOARD takes names or pseudonyms, got '${LEADERBOARD}'")
 endif()
@@ -79,6 +82,7 @@ foreach(entry IN LISTS entries)
   endif()
   execute_process(COMMAND "${CMAKE_COMMAND}" -S "${source_dir}" -B "${BUILD_DIR}" ${generator}
       -D CMAKE_BUILD_TYPE=Release -D RT_GRADE=ON "-D RT_EXERCISES_DIR=${files}" "-D RT_GRADE_CHAPTERS=${CHAPTERS}"
+      "-D RT_OPEN_EXERCISES=${OPEN_EXERCISES}"
     RESULT_VARIABLE rc OUTPUT_QUIET)
   if(rc EQUAL 0)
     execute_process(COMMAND "${CMAKE_COMMAND}" --build "${BUILD_DIR}" --config Release --target grade_report RESULT_VARIABLE rc)

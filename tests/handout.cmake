@@ -3,7 +3,8 @@
 # contracts at the level the course chooses.
 #
 #   cmake -D OUT=<folder> [-D HINT_TIERS=3|2|1|0] [-D CONTRACTS=behaviour|detailed]
-#         [-D CLASSROOM_CHAPTERS="01;02"] [-D CLASSROOM=OFF] [-D SOLVED="01;02"] -P tests/handout.cmake
+#         [-D CLASSROOM_CHAPTERS="01;02"] [-D CLASSROOM=OFF] [-D SOLVED="01;02"]
+#         [-D OPEN_EXERCISES=all|none|"08.4;10.7"] -P tests/handout.cmake
 #
 # HINT_TIERS (default 3, all): the tiers of every chapters/NN_name/hints.md kept, 1 the idea, 2 the
 # trap, 3 the walk-through; 0 leaves the hints out.
@@ -18,7 +19,13 @@
 # some: their exercises/ files are the reference answers as given code (no marker, no stub), and
 # they are left out of grading (Classroom's chapters and the grade preset's RT_GRADE_CHAPTERS), so
 # a later chapter's cases run on answers that are right.
+# OPEN_EXERCISES (default all): the open exercises assigned (each chapter's last, `EXERCISE NN.k
+# (open)`). The others stay in the handout to try, but the grade preset, and so Classroom, leaves
+# their cases out (RT_OPEN_EXERCISES, tests/open_exercises.cmake), and their lesson sections say so.
 get_filename_component(kit "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+include("${kit}/tests/open_exercises.cmake")
+rt_open_assigned(assigned_open "${OPEN_EXERCISES}" "${kit}/tests" "handout: OPEN_EXERCISES")
+rt_open_case_files(kit_open_exercises open_files "${kit}/tests")
 if(NOT OUT)
   message(FATAL_ERROR "handout: say where to write it: -D OUT=<folder>")
 endif()
@@ -100,6 +107,28 @@ if(SOLVED)
     endif()
   endforeach()
 endif()
+# The open exercises not assigned: the grade preset leaves them out, and each lesson's section says
+# so under its heading ("## ... (EXERCISE 08.4, open)").
+if(DEFINED OPEN_EXERCISES AND NOT OPEN_EXERCISES STREQUAL "all")
+  file(READ "${OUT}/CMakePresets.json" presets)
+  string(REPLACE "\"RT_OPEN_EXERCISES\": \"all\"" "\"RT_OPEN_EXERCISES\": \"${OPEN_EXERCISES}\"" presets "${presets}")
+  file(WRITE "${OUT}/CMakePresets.json" "${presets}")
+endif()
+foreach(number IN LISTS kit_open_exercises)
+  if(number IN_LIST assigned_open)
+    continue()
+  endif()
+  string(SUBSTRING "${number}" 0 2 nn)
+  file(GLOB lesson "${OUT}/chapters/${nn}_*/README.md")
+  file(READ "${lesson}" text)
+  string(REPLACE "." "\\." pattern "${number}")
+  string(REGEX MATCH "\n## [^\n]*\\(EXERCISE ${pattern}, open\\)\n" heading "${text}")
+  if(NOT heading)
+    message(FATAL_ERROR "handout: ${lesson} has no section headed `## ... (EXERCISE ${number}, open)` to mark as not assigned")
+  endif()
+  string(REPLACE "${heading}" "${heading}\n> Not assigned in this course: the grader leaves ${number} out (its cases neither run nor count).\n> The problem is here to try all the same.\n" text "${text}")
+  file(WRITE "${lesson}" "${text}")
+endforeach()
 # The handout speaks of itself, and has no solutions/ to send a student to. The README drops what
 # only the kit has: a line ending in `<!-- kit only -->`, and the lines from `<!-- kit only: begin -->`
 # to `<!-- kit only: end -->`; a mention of solutions/ left outside them stops the handout.
@@ -226,5 +255,12 @@ endif()
 set(solved_words "")
 if(SOLVED)
   set(solved_words ", chapters ${SOLVED} given solved")
+endif()
+if(DEFINED OPEN_EXERCISES AND NOT OPEN_EXERCISES STREQUAL "all")
+  string(JOIN ", " open_words ${assigned_open})
+  if(NOT assigned_open)
+    set(open_words "none")
+  endif()
+  string(APPEND solved_words ", open exercises assigned: ${open_words}")
 endif()
 message(STATUS "the handout, with ${HINT_TIERS} tier(s) of hints and ${CONTRACTS} contracts (${detail_blocks} step blocks ${done})${solved_words}: ${OUT}")

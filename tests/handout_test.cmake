@@ -255,3 +255,46 @@ if(rc EQUAL 0 OR NOT log MATCHES "chapter 02 is both SOLVED and in CLASSROOM_CHA
   message(FATAL_ERROR "handout.cmake graded a solved chapter (SOLVED=01;02, CLASSROOM_CHAPTERS=02;03):\n${log}")
 endif()
 message(STATUS "SOLVED=01;...;06: six chapters given solved, graded 07-10 only")
+
+# OPEN_EXERCISES: the open exercises assigned. The others stay in the handout, their lesson sections
+# say they are not assigned, and the grade preset leaves their case files out of the graders (so
+# Classroom, which grades through the preset, neither runs nor counts them). A name that is not one
+# of the kit's open exercises stops the handout.
+set(out "${WORK}/open_10_7")
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${out}" -D "OPEN_EXERCISES=10.7" -D CLASSROOM=OFF -P "${KIT}/tests/handout.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "handout.cmake with OPEN_EXERCISES=10.7 failed:\n${log}")
+endif()
+file(READ "${out}/CMakePresets.json" presets)
+file(READ "${out}/chapters/08_mailboxing/README.md" lesson_08)
+file(READ "${out}/chapters/10_hierarchies/README.md" lesson_10)
+if(NOT presets MATCHES "\"RT_OPEN_EXERCISES\": \"10.7\"")
+  message(FATAL_ERROR "OPEN_EXERCISES=10.7: the grade preset should carry RT_OPEN_EXERCISES 10.7")
+endif()
+if(NOT lesson_08 MATCHES "\\(EXERCISE 08\\.4, open\\)\n\n> Not assigned in this course" OR lesson_10 MATCHES "Not assigned in this course")
+  message(FATAL_ERROR "OPEN_EXERCISES=10.7: lesson 08's open section should say it is not assigned, lesson 10's not")
+endif()
+execute_process(COMMAND "${CMAKE_COMMAND}" -S "${out}" -B "${out}/build" -D RT_GRADE=ON -D RT_OPEN_EXERCISES=10.7
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the handout with OPEN_EXERCISES=10.7 does not configure to grade:\n${log}")
+endif()
+# The build files name each object they compile (build.ninja, or a Makefile's build.make).
+file(GLOB_RECURSE build_files "${out}/build/*.ninja" "${out}/build/*build.make" "${out}/build/*.vcxproj")
+set(compiled "")
+foreach(f IN LISTS build_files)
+  file(STRINGS "${f}" lines REGEX "ch[0-9][0-9]/open_[a-z_]+\\.cpp")
+  string(REGEX MATCHALL "ch[0-9][0-9]/open_[a-z_]+\\.cpp" found "${lines}")
+  list(APPEND compiled ${found})
+endforeach()
+list(REMOVE_DUPLICATES compiled)
+if(NOT compiled STREQUAL "ch10/open_build.cpp")
+  message(FATAL_ERROR "OPEN_EXERCISES=10.7: the graders should compile ch10/open_build.cpp alone of the open cases, not '${compiled}'")
+endif()
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "OUT=${WORK}/open_bogus" -D "OPEN_EXERCISES=10.8" -P "${KIT}/tests/handout.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE log ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "'10\\.8' is not one of them")
+  message(FATAL_ERROR "handout.cmake took OPEN_EXERCISES=10.8, which is not an open exercise:\n${log}")
+endif()
+message(STATUS "OPEN_EXERCISES=10.7: 08.4 marked not assigned and left out of the graders")

@@ -14,7 +14,14 @@ foreach(bad "11" "1;2" "01,02")
     message(FATAL_ERROR "a package for CHAPTERS=${bad} should not be written, and say why (${rc}):\n${out}")
   endif()
 endforeach()
-execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${KIT}" -D "OUT=${WORK}" -D CHAPTERS=01
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${KIT}" -D "OUT=${WORK}/bad" -D "OPEN_EXERCISES=10.8"
+  -P "${KIT}/tests/gradescope/package.cmake" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(rc EQUAL 0 OR NOT out MATCHES "gradescope package: OPEN_EXERCISES")
+  message(FATAL_ERROR "a package for OPEN_EXERCISES=10.8 (no such open exercise) should not be written, and say why (${rc}):\n${out}")
+endif()
+# (OPEN_EXERCISES=10.7: the autograder's build leaves the other open exercises' cases out; checked
+# below on its cache, since this assignment grades chapter 01 alone.)
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SOURCE_DIR=${KIT}" -D "OUT=${WORK}" -D CHAPTERS=01 -D OPEN_EXERCISES=10.7
   -P "${KIT}/tests/gradescope/package.cmake" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the package was not written")
@@ -38,6 +45,10 @@ if(NOT rc EQUAL 0 OR NOT out MATCHES "the kit was built in")
 endif()
 file(STRINGS "${root}/work/build/.ninja_log" built)
 list(LENGTH built setup_log_lines)
+file(STRINGS "${root}/work/build/CMakeCache.txt" open_setting REGEX "^RT_OPEN_EXERCISES:")
+if(NOT open_setting MATCHES "=10\\.7$")
+  message(FATAL_ERROR "the package was written with OPEN_EXERCISES=10.7; the autograder's build has '${open_setting}'")
+endif()
 file(COPY "${KIT}/solutions/01_ray_casting.cpp" DESTINATION "${root}/submission/my_work")
 execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=RT_GRADE_CHAPTERS "AUTOGRADER_ROOT=${root}"
     bash "${root}/source/run_autograder"
