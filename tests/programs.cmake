@@ -271,6 +271,17 @@ rt_same_render(01_ray_casting.figure_threads 01_ray_casting FIRST --threads 1 SE
 rt_expect_exit(07_uniform_grid.figure_stats 07_uniform_grid 0
   "rays_primary=600\n.*accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\n.*references_per_object=[1-9]"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_stats.png")
+# Your grid's shape (07.7, here the reference's) renders the figure too, and a teapot in a stadium
+# as brute force does: the build lists the objects in the cells it asks for (grid_lambda 0: no
+# lambda asked).
+rt_same_render(07_uniform_grid.open_resolution_as_brute_stadium 07_uniform_grid FIRST --accel brute SECOND --resolution open
+  ARGS --width 64 GENERATE stadium --depth 2)
+rt_expect_exit(07_uniform_grid.open_resolution_stats 07_uniform_grid 0
+  "accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\ngrid_lambda=0\n"
+  --resolution open --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_open_stats.png")
+rt_expect_exit(07_uniform_grid.unknown_resolution 07_uniform_grid 2 "--resolution takes rule or open, got 'cubic'" --resolution cubic)
+rt_expect_exit(07_uniform_grid.resolution_with_brute 07_uniform_grid 2 "--resolution shapes grid; it does not apply to --accel brute"
+  --accel brute --resolution open)
 rt_expect_exit(07_uniform_grid.heatmap_written 07_uniform_grid 0 "accel=brute"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 32 --accel brute --heat-of tests --stats
   --heatmap "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat.png"
