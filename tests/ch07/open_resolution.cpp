@@ -149,3 +149,24 @@ TEST_CASE("07.7's stored reference costs are the reference resolution's", "[.][o
         CHECK(fixed(reference, 6) == fixed(c.reference, 6));
     }
 }
+
+// The kit's own check of 07.7's contract example (not graded; it runs with the stored costs'
+// check): 64 boxes of side 0.1, one at the centre of each 0.5 x 0.5 square of a floor 4 x 0.1 x 4,
+// take 129 words at 8 x 1 x 8 (65 offsets, 64 references), within the budget of 2048; 64 x 1 x 64
+// passes it with its 4097 offsets alone.
+TEST_CASE("07.7's contract example: the words of two resolutions of a floor of boxes", "[.][open_reference_costs]")
+{
+    const Bounds floor{point3(0.0f), point3(4.0f, 0.1f, 4.0f)};
+    std::vector<Bounds> boxes;
+    for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < 8; ++k) {
+            const point3 c(0.25f + 0.5f * i, 0.05f, 0.25f + 0.5f * k);
+            boxes.push_back({c - vec3(0.05f), c + vec3(0.05f)});
+        }
+    CHECK(grid_budget_words(boxes.size()) == 2048);
+    CHECK(grid_words(floor, boxes, {8, 1, 8}) == 129);
+    CHECK(grid_resolution_problem(floor, boxes, {8, 1, 8}).empty());
+    CHECK(grid_words(floor, boxes, {64, 1, 64}) > 2048);
+    CHECK(grid_resolution_problem(floor, boxes, {64, 1, 64}).find("4097 offsets") != std::string::npos);
+    CHECK(grid_resolution_problem(floor, boxes, {0, 1, 8}).find("0 cells along x") != std::string::npos);
+}
