@@ -211,4 +211,85 @@ bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Int
     // STUB return stub("07.6", false);
 }
 
+cell3 choose_grid_resolution(const Bounds& box, const std::vector<Bounds>& boxes)
+{
+    // EXERCISE 07.7 (open): the grid's shape for a scene.
+    // Return the cells along each axis of the grid over `box` for the objects whose boxes are
+    // `boxes`: each axis 1 to max_cells_per_axis, the grid's words (grid_words) within
+    // grid_budget_words. Any method; the grader checks the grid's answers against brute force, then
+    // counts its tests and cells per ray against the reference's.
+    // Lesson: "The grid's shape for a scene (EXERCISE 07.7, open)".
+    // Stuck? hint 07.7 (tier 1: the idea; 2: the trap; 3: the walk-through)
+    // SOLUTION BEGIN
+    // The reference: a model of a ray's cost, greedily improved one axis at a time. Three terms:
+    //  - cells: a line through the box crosses a plane across axis a with the chance of that
+    //    plane's area A_a over half the box's surface, so it visits 1 + sum (n_a - 1) A_a /
+    //    (A_x + A_y + A_z) cells;
+    //  - tests along a line: it meets a cell with the chance of the cell's surface over the box's
+    //    and tests every reference there (all cells have one size: the references times that);
+    //  - tests near the objects: the rays aim at them (the eye's) or start among them, so a ray
+    //    meets a cell about as often as the cell lists objects, and tests its list: the mean list
+    //    length seen from a reference, sum refs_c^2 / refs. A cluster (a teapot in a stadium) is
+    //    where this term counts, and the line's term does not see it.
+    // Weighted 2, 1 and 1/2, the weights chosen by trying a few on the scenes 07.7 is measured on
+    // (the line's two terms alone stop at 1.8 and 7.4 times this cost on the teapots in a stadium;
+    // without the line's tests, the sphereflake gets 2 x 10 x 2 cells). From 1 x 1 x 1, each round tries
+    // each axis times 2, 3/2, 5/4, 4/5, 2/3 and 1/2, keeps the cheapest within the budget, and
+    // stops when none is cheaper.
+    const vec3 e = box.extent();
+    const double area[3] = {static_cast<double>(e.y) * e.z, static_cast<double>(e.x) * e.z,
+                            static_cast<double>(e.x) * e.y};
+    const double faces = area[0] + area[1] + area[2];
+    cell3 n{1, 1, 1};
+    if (boxes.empty() || !(faces > 0.0) || !std::isfinite(faces))
+        return n;
+    const long long budget = grid_budget_words(boxes.size());
+    std::vector<std::uint32_t> listed;
+    const auto cost = [&](const cell3& m, double& out) {
+        const long long words = grid_words(box, boxes, m);
+        if (words > budget)
+            return false;
+        const GridShape shape = grid_shape(box, m);
+        listed.assign(static_cast<std::size_t>(shape.cell_count()), 0u);
+        for (const Bounds& b : boxes) {
+            const CellRange r = cells_overlapping(shape, b);
+            for (int i = r.first.x; i <= r.last.x; ++i)
+                for (int j = r.first.y; j <= r.last.y; ++j)
+                    for (int l = r.first.z; l <= r.last.z; ++l)
+                        ++listed[static_cast<std::size_t>(shape.address({i, j, l}))];
+        }
+        double squares = 0.0;
+        for (const std::uint32_t c : listed)
+            squares += static_cast<double>(c) * c;
+        const double references = static_cast<double>(words) - static_cast<double>(listed.size()) - 1.0;
+        const double cell_faces = area[0] / (m.y * m.z) + area[1] / (m.x * m.z) + area[2] / (m.x * m.y);
+        const double crossed = 1.0 + ((m.x - 1) * area[0] + (m.y - 1) * area[1] + (m.z - 1) * area[2]) / faces;
+        const double near = references > 0.0 ? squares / references : 0.0;
+        out = 2.0 * crossed + references * cell_faces / faces + 0.5 * near;
+        return true;
+    };
+    double best = 0.0;
+    cost(n, best);
+    for (;;) {
+        cell3 next = n;
+        double next_cost = best;
+        for (int a = 0; a < 3; ++a)
+            for (const double f : {2.0, 1.5, 1.25, 0.8, 2.0 / 3.0, 0.5}) {
+                cell3 m = n;
+                m[a] = std::clamp(static_cast<int>(std::lround(n[a] * f)), 1, max_cells_per_axis);
+                double c = 0.0;
+                if (m[a] != n[a] && cost(m, c) && c < next_cost) {
+                    next = m;
+                    next_cost = c;
+                }
+            }
+        if (next == n)
+            return n;
+        n = next;
+        best = next_cost;
+    }
+    // SOLUTION END
+    // STUB return stub("07.7", cell3{0, 0, 0});
+}
+
 }  // namespace rt

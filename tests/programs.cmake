@@ -233,6 +233,32 @@ function(rt_same_render name program)
   set_tests_properties(programs.${name} PROPERTIES LABELS "programs")
 endfunction()
 
+# An open exercise's option in its chapter's program (07.7's --resolution open, 08.4's --mailbox
+# cache), with the reference's answer in the student's place: four tests, each named by the caller.
+#   SAME <name> FIRST <options> ARGS <options> GENERATE <args>: the option renders what FIRST does;
+#   STATS <name> <regex>: --stats of the figure with the option matches;
+#   UNKNOWN <name> <values> <bad>: another value is refused, the message naming the option's values;
+#   ELSEWHERE <name> <shapes> <accel>: with an --accel the option does not shape, refused, naming those it does.
+function(rt_open_option_tests program option value)
+  cmake_parse_arguments(PARSE_ARGV 3 arg "" "" "SAME;FIRST;ARGS;GENERATE;STATS;UNKNOWN;ELSEWHERE")
+  list(GET arg_SAME 0 same)
+  rt_same_render(${program}.${same} ${program} FIRST ${arg_FIRST} SECOND ${option} ${value} ARGS ${arg_ARGS}
+    GENERATE ${arg_GENERATE})
+  list(GET arg_STATS 0 stats)
+  list(GET arg_STATS 1 stats_match)
+  rt_expect_exit(${program}.${stats} ${program} 0 "${stats_match}" ${option} ${value} --width 30 --height 20 --stats
+    --out "${CMAKE_CURRENT_BINARY_DIR}/programs/${program}_${stats}.png")
+  list(GET arg_UNKNOWN 0 unknown)
+  list(GET arg_UNKNOWN 1 values)
+  list(GET arg_UNKNOWN 2 bad)
+  rt_expect_exit(${program}.${unknown} ${program} 2 "${option} takes ${values}, got '${bad}'" ${option} ${bad})
+  list(GET arg_ELSEWHERE 0 elsewhere)
+  list(GET arg_ELSEWHERE 1 shapes)
+  list(GET arg_ELSEWHERE 2 accel)
+  rt_expect_exit(${program}.${elsewhere} ${program} 2 "${option} shapes ${shapes}; it does not apply to --accel ${accel}"
+    --accel ${accel} ${option} ${value})
+endfunction()
+
 # One brute force: chapter 04's program and chapters 07-10's with --accel brute render the same picture
 # with the same rays. Each program compiles the shared inline code on its own, so only the programs can
 # show that they agree: the tree's cones once differed by GCC's rounding (cone.hpp, cone_surface).
@@ -271,6 +297,14 @@ rt_same_render(01_ray_casting.figure_threads 01_ray_casting FIRST --threads 1 SE
 rt_expect_exit(07_uniform_grid.figure_stats 07_uniform_grid 0
   "rays_primary=600\n.*accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\n.*references_per_object=[1-9]"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_stats.png")
+# Your grid's shape (07.7, here the reference's) renders the figure too, and a teapot in a stadium
+# as brute force does: the build lists the objects in the cells it asks for (grid_lambda 0: no
+# lambda asked).
+rt_open_option_tests(07_uniform_grid --resolution open
+  SAME open_resolution_as_brute_stadium FIRST --accel brute ARGS --width 64 GENERATE stadium --depth 2
+  STATS open_resolution_stats "accel=grid\nobjects=32772\ncells_visited=[1-9][0-9]*\ngrid_resolution=[0-9]+x[0-9]+x[0-9]+\ngrid_lambda=0\n"
+  UNKNOWN unknown_resolution "rule or open" cubic
+  ELSEWHERE resolution_with_brute grid brute)
 rt_expect_exit(07_uniform_grid.heatmap_written 07_uniform_grid 0 "accel=brute"
   --scene "${PROJECT_SOURCE_DIR}/common/scenes/spheres.nff" --width 32 --accel brute --heat-of tests --stats
   --heatmap "${CMAKE_CURRENT_BINARY_DIR}/programs/07_uniform_grid_heat.png"
@@ -309,14 +343,11 @@ rt_expect_exit(08_mailboxing.figure_stats 08_mailboxing 0
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_stats.png")
 # Your ray cache (08.4, here the reference's) renders the figure too: the same picture as the
 # mailboxes, 1 KB a thread.
-rt_same_render(08_mailboxing.cache_as_mailboxes_sticks 08_mailboxing FIRST --accel grid-mailbox SECOND --mailbox cache
-  ARGS --width 64 --lambda 8 GENERATE sticks --depth 2)
-rt_expect_exit(08_mailboxing.cache_stats 08_mailboxing 0
-  "accel=grid-mailbox\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=1024\n"
-  --mailbox cache --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_cache_stats.png")
-rt_expect_exit(08_mailboxing.unknown_mailbox 08_mailboxing 2 "--mailbox takes object or cache, got 'ray'" --mailbox ray)
-rt_expect_exit(08_mailboxing.mailbox_with_grid 08_mailboxing 2 "--mailbox shapes grid-mailbox; it does not apply to --accel grid"
-  --accel grid --mailbox cache)
+rt_open_option_tests(08_mailboxing --mailbox cache
+  SAME cache_as_mailboxes_sticks FIRST --accel grid-mailbox ARGS --width 64 --lambda 8 GENERATE sticks --depth 2
+  STATS cache_stats "accel=grid-mailbox\nobjects=8002\n.*tests_answered_by_mailboxes=[1-9][0-9]*\n.*mailbox_bytes_per_thread=1024\n"
+  UNKNOWN unknown_mailbox "object or cache" ray
+  ELSEWHERE mailbox_with_grid grid-mailbox grid)
 rt_expect_exit(08_mailboxing.no_answers_without_mailboxes 08_mailboxing 0 "tests_answered_by_mailboxes=0\n"
   --width 30 --height 20 --stats --accel grid --out "${CMAKE_CURRENT_BINARY_DIR}/programs/08_mailboxing_off.png")
 rt_expect_exit(08_mailboxing.unknown_accel 08_mailboxing 2 "--accel takes brute, grid or grid-mailbox, got 'yes'" --accel yes)

@@ -19,7 +19,10 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace rt {
@@ -287,5 +290,83 @@ struct Grid {
 // DETAIL END
 bool closest_in_cell(const Grid& grid, const GridWalk& walk, const Ray& ray, Interval range, const Objects& objects,
                      ObjectHit& best);
+
+
+// The memory budget of EXERCISE 07.7: a grid's words (4 bytes each: the cell_start offsets, one a
+// cell and one more, and the references in object_index, one per cell each object's box overlaps)
+// at most grid_budget_words_per_object a scene's object (and never less than one object's worth).
+// Why 32: the cube-root rule at the chapter's default lambda (4 cells an object) takes 7 to 10
+// words an object on the scenes 07.7 is measured on and 25 on a pile of long sticks (each listed
+// in many cells); 32 leaves room to spend. More cells always test fewer objects, so without a
+// budget the finest grid would be the answer.
+constexpr long long grid_budget_words_per_object = 32;
+
+inline long long grid_budget_words(std::size_t objects)
+{
+    return grid_budget_words_per_object * static_cast<long long>(std::max<std::size_t>(objects, 1));
+}
+
+// The words a grid of n cells an axis over `box` takes with the objects whose boxes are `boxes`
+// (as 07.7 is given them): n.x n.y n.z + 1 offsets, and a reference for every cell each box
+// overlaps (your 07.3, the cells the build lists it in). Counted in 64 bits; n must be valid
+// (1 .. max_cells_per_axis an axis).
+inline long long grid_words(const Bounds& box, const std::vector<Bounds>& boxes, const cell3& n)
+{
+    const GridShape shape = grid_shape(box, n);
+    long long words = static_cast<long long>(n.x) * n.y * n.z + 1;
+    for (const Bounds& b : boxes) {
+        const CellRange r = cells_overlapping(shape, b);
+        const cell3 span = r.last - r.first + cell3(1);
+        words += static_cast<long long>(std::max(span.x, 0)) * std::max(span.y, 0) * std::max(span.z, 0);
+    }
+    return words;
+}
+
+// What is wrong with n as 07.7's answer for `box` and `boxes`, in words ("" when nothing is): an
+// axis below 1 cell or above max_cells_per_axis, or more words than the budget.
+inline std::string grid_resolution_problem(const Bounds& box, const std::vector<Bounds>& boxes, const cell3& n)
+{
+    const std::string shown = std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z);
+    for (int a = 0; a < 3; ++a)
+        if (n[a] < 1 || n[a] > max_cells_per_axis)
+            return "the resolution " + shown + " has " + std::to_string(n[a]) + " cells along " + "xyz"[a] +
+                   ": each axis takes 1 to " + std::to_string(max_cells_per_axis);
+    const long long words = grid_words(box, boxes, n), budget = grid_budget_words(boxes.size());
+    if (words > budget)
+        return "the resolution " + shown + " takes " + std::to_string(words) + " words (" +
+               std::to_string(static_cast<long long>(n.x) * n.y * n.z + 1) + " offsets and " +
+               std::to_string(words - static_cast<long long>(n.x) * n.y * n.z - 1) + " references) for " +
+               std::to_string(boxes.size()) + " objects: the budget is " + std::to_string(budget) + " (" +
+               std::to_string(grid_budget_words_per_object) + " an object)";
+    return "";
+}
+
+// EXERCISE 07.7 (open): the grid's shape for a scene: the cells along each axis of the grid over
+// `box`, for the objects whose boxes are `boxes` (object k's box grown by its margin and the grid's
+// rounding, as the build lists it; `box` the grid's own, around them all). Any method: cubic cells
+// or not, counts from the boxes' sizes and spread, candidates tried and their references counted
+// (grid_words), any mix. The given build (grid.hpp's UniformGrid with chosen_resolution) lists the
+// objects in the cells you ask for and walks them with your 07.4-07.6.
+// The lesson's section "The grid's shape for a scene (EXERCISE 07.7, open)" poses the problem.
+//  - Correct (the gate): each axis 1 to max_cells_per_axis, and grid_words within
+//    grid_budget_words (grid_resolution_problem says "" for it); the grid then answers every ray as
+//    brute force does (the kit's scenes, generated ones, ties, a huge floor, far away). An answer
+//    that breaks any of these, on any scene, scores 0 for the whole exercise, and the grader names
+//    the scene and what is wrong.
+//  - Cheap (the score): the cost of a closest-hit ray is its objects tested plus its cells visited
+//    times grid_cell_step_cost, counted on seeded rays over four of the kit's generated scenes (the
+//    lesson lists them: two of a teapot in a stadium among them). Your cost is the geometric mean over the scenes of your cost per ray over
+//    the reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2, one third;
+//    beyond 2, none. It is what the class leaderboard ranks, lower first. Counts, never time.
+//  - Memory: the budget above; anything you compute on the way is yours.
+// Example: 64 boxes of side 0.1, one at the centre of each 0.5 x 0.5 square of a floor
+// 4 x 0.1 x 4: 8 x 1 x 8 (07.1's answer at lambda 1) takes 65 offsets and 64 references, 129
+// words, within the budget of 32 x 64 = 2048; 64 x 1 x 64 takes 4097 offsets alone, over it.
+cell3 choose_grid_resolution(const Bounds& box, const std::vector<Bounds>& boxes);
+
+// Why 1: what one cell of the walk (07.5's step, and 07.6 reading the cell's list) costs beside one
+// intersection test, fitted to the time of the grid's queries on the kit's generated scenes at
+// resolutions from coarse to fine (the lesson's section gives the fit: 0.7 to 1.6 a scene).
+constexpr double grid_cell_step_cost = 1.0;
 
 }  // namespace rt

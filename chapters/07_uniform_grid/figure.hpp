@@ -27,13 +27,18 @@ inline NffScene figure_scene() { return generated_scene(write_mountain, figure_m
 
 // The structures chapters 01-07 bring (programs/structures.hpp): brute force and the grid. Brute
 // force builds nothing: with no accelerator the scene asks chapter 02's query and chapter 04's
-// feeler (EXERCISE 04.2), as chapter 04's program does.
+// feeler (EXERCISE 04.2), as chapter 04's program does. The grid's resolution is 07.1's rule at
+// lambda, or with --resolution open your 07.7's (chapter 07's program; lambda is then not asked).
 inline Structures structures()
 {
     return {{brute_force_name, "every object, every ray", 2, 0.0f, {},
              [](const Objects&, const StructureTuning&) { return std::unique_ptr<Accelerator>{}; }},
-            {"grid", "the uniform grid", 7, default_lambda, {"--lambda"},
-             [](const Objects& o, const StructureTuning& t) { return std::make_unique<UniformGrid>(o, t.lambda); }}};
+            {"grid", "the uniform grid", 7, default_lambda, {"--lambda", "--resolution"},
+             [](const Objects& o, const StructureTuning& t) {
+                 if (t.resolution == "open")
+                     return std::make_unique<UniformGrid>(o, ChosenResolution{});  // your 07.7
+                 return std::make_unique<UniformGrid>(o, t.lambda);
+             }}};
 }
 
 // The figure's scene through the grid, lambda cells per object; with `cost`, what each pixel cost.

@@ -456,6 +456,22 @@ inline GridPlan plan_over_all(const Objects& objects, const Bounds& scene, const
     return plan;
 }
 
+// A built grid's statistics (GridStats), for `objects` objects built at `lambda` (0: 07.7's shape).
+inline void grid_stats(const Grid& grid, int objects, float lambda, const Timer& timer, GridStats& stats)
+{
+    const int cell_count = grid.shape.cell_count();
+    stats.objects = objects;
+    stats.resolution = grid.shape.n;
+    stats.lambda = lambda;
+    stats.cells = cell_count;
+    stats.references = static_cast<long long>(grid.object_index.size());
+    stats.empty_cells = 0;
+    for (int p = 0; p < cell_count; ++p)
+        stats.empty_cells += grid.cell_start[p] == grid.cell_start[p + 1];
+    stats.bytes = (grid.cell_start.size() + grid.object_index.size()) * sizeof(std::uint32_t);
+    stats.build_seconds = timer.seconds();
+}
+
 // Builds the grid over every object, lambda cells per object (lowered where it would not pay), each
 // object's box grown by its margin (`margins`, margins_of(objects)).
 // Throws InputError when the resolution asked for would pass max_grid_cells.
@@ -477,20 +493,55 @@ inline Grid build_grid(const Objects& objects, const Margins& margins, float lam
     std::vector<std::uint32_t> all(static_cast<std::size_t>(count));
     std::iota(all.begin(), all.end(), 0u);
     list_objects(grid, all, plan.ranges);
-    const int cell_count = grid.shape.cell_count();
+    if (stats)
+        grid_stats(grid, count, plan.lambda, timer, *stats);
+    return grid;
+}
 
-    if (stats) {
-        stats->objects = count;
-        stats->resolution = grid.shape.n;
-        stats->lambda = plan.lambda;
-        stats->cells = cell_count;
-        stats->references = static_cast<long long>(grid.object_index.size());
-        stats->empty_cells = 0;
-        for (int p = 0; p < cell_count; ++p)
-            stats->empty_cells += grid.cell_start[p] == grid.cell_start[p + 1];
-        stats->bytes = (grid.cell_start.size() + grid.object_index.size()) * sizeof(std::uint32_t);
-        stats->build_seconds = timer.seconds();
+// What EXERCISE 07.7 is given for a scene: the grid's box (the objects' union grown by its margin,
+// as plan_grid grows it) and each object's box as the build lists it (grown by its margin and the
+// grid's rounding, object_cell_ranges' boxes), so that grid_words counts exactly what the build
+// stores.
+struct ResolutionQuestion {
+    Bounds box;
+    std::vector<Bounds> boxes;
+};
+
+inline ResolutionQuestion resolution_question(const Objects& objects, const Margins& margins)
+{
+    const Bounds scene = bounds_of_all(objects);
+    ResolutionQuestion q;
+    q.box = objects.size() > 0 ? grown(scene, margins.of(scene)) : Bounds{point3(0.0f), point3(1.0f)};
+    const vec3 rounding = grid_rounding(grid_shape(q.box, cell3(1)));
+    q.boxes.resize(static_cast<std::size_t>(objects.size()));
+    for (int k = 0; k < objects.size(); ++k) {
+        const Bounds b = objects.bounds(k);
+        q.boxes[static_cast<std::size_t>(k)] = grown(b, vec3(margins.of(b)) + rounding);
     }
+    return q;
+}
+
+// Builds the grid over every object at the resolution your 07.7 chooses (choose_grid_resolution),
+// each object listed where its box as 07.7 saw it lies. Throws InputError, naming what is wrong
+// (grid_resolution_problem), for a resolution outside the rules or over the budget.
+inline Grid build_chosen_grid(const Objects& objects, const Margins& margins, GridStats* stats = nullptr)
+{
+    const Timer timer;
+    const ResolutionQuestion q = resolution_question(objects, margins);
+    const cell3 n = choose_grid_resolution(q.box, q.boxes);
+    const std::string problem = grid_resolution_problem(q.box, q.boxes, n);
+    if (!problem.empty())
+        throw InputError("your 07.7 (choose_grid_resolution) for " + std::to_string(objects.size()) + " objects: " + problem);
+    Grid grid;
+    grid.shape = grid_shape(q.box, n);
+    std::vector<CellRange> ranges(q.boxes.size());
+    for (std::size_t k = 0; k < q.boxes.size(); ++k)
+        ranges[k] = cells_overlapping(grid.shape, q.boxes[k]);
+    std::vector<std::uint32_t> all(q.boxes.size());
+    std::iota(all.begin(), all.end(), 0u);
+    list_objects(grid, all, ranges);
+    if (stats)
+        grid_stats(grid, objects.size(), 0.0f, timer, *stats);
     return grid;
 }
 
@@ -602,6 +653,9 @@ inline void report_grid(std::ostream& out, const GridStats& s)
         << "build_seconds=" << s.build_seconds << '\n';
 }
 
+// UniformGrid's tag for a grid at 07.7's resolution instead of 07.1's at a lambda.
+struct ChosenResolution {};
+
 class UniformGrid final : public MarginedAccelerator {
 public:
     UniformGrid(const Objects& objects, float lambda)
@@ -610,6 +664,11 @@ public:
     }
     // A grid built by other means (the tests build small ones by hand): its margins reach everywhere.
     explicit UniformGrid(Grid grid) : grid_(std::move(grid)) {}
+    // The grid at the resolution your 07.7 chooses (build_chosen_grid).
+    UniformGrid(const Objects& objects, ChosenResolution)
+        : MarginedAccelerator(margins_of(objects)), grid_(build_chosen_grid(objects, margins_, &stats_))
+    {
+    }
 
     std::size_t bytes() const override { return stats_.bytes; }
     void report(std::ostream& out) const override { report_grid(out, stats_); }

@@ -227,11 +227,21 @@ int main(int argc, char** argv)
 {
     return run_program("07_uniform_grid", [&] {
         Options o;
+        std::string& resolution = o.structure.tuning.resolution;
+        const auto resolution_option = [&](CommandLine& cli) {
+            cli.option("--resolution", resolution,
+                       "how the grid chooses its cells along each axis: rule (07.1's cube-root rule at --lambda, "
+                       "the default) or open (your choose_grid_resolution, 07.7)");
+        };
+        const auto check_resolution = [&](const CommandLine& cli) {
+            if (cli.given("--resolution") && resolution != "rule" && resolution != "open")
+                throw InputError("--resolution takes rule or open, got '" + resolution + "'");
+        };
         return scene_program_main(
             argc, argv, o, scene_program(o),
             {"The uniform grid: a scene's rays walk its cells, testing only the objects there.",
              "measure brute force against the grid as scenes grow, and lambda's trade",
              "where --sweep writes its tables (*_n.csv and *_scenes.csv beside it)"},
-            1e5f, {}, {}, [&](const CommandLine& cli) { sweep(o, cli); });
+            1e5f, resolution_option, check_resolution, [&](const CommandLine& cli) { sweep(o, cli); });
     });
 }

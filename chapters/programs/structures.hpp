@@ -32,6 +32,7 @@ struct StructureTuning {
     std::string split;             // --split, "sah", "median" or "open"; empty: the structure's own
     std::uint32_t table_size = 0;  // --table-size, a hash table's size; 0: the structure's own
     std::string mailbox;           // --mailbox, "object" or "cache" (08.4); empty: the structure's own
+    std::string resolution;        // --resolution, "rule" or "open" (07.7); empty: the structure's own
 };
 
 // The tuning of a grid at `lambda` cells per object, every other field left to the structure.

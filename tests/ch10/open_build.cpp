@@ -89,13 +89,8 @@ bool check_gate()
 }
 
 // The scenes 10.7's cost is measured on (the contract's "five of the kit's generated scenes"), with
-// the reference's cost per ray on each (ch10.open_reference_costs holds these to the solution's).
-struct CostScene {
-    const char* name;
-    void (*write)(std::ostream&, int);
-    int depth;
-    double reference;  // the reference build's cost per ray
-};
+// the reference build's cost per ray on each (ch10.open_reference_costs holds these to the solution's).
+using open_exercise::CostScene;
 const CostScene cost_scenes[] = {
     {"teapot in a stadium 4", write_stadium, 4, 3.929626},
     {"sticks 3", write_sticks, 3, 13.969360},
@@ -110,7 +105,7 @@ constexpr int cost_rays = 4096;  // seeded rays per scene (seeded_ray), closest 
 double cost_per_ray(const CostScene& c, const BvhSettings& settings)
 {
     const open_exercise::Counted n = open_exercise::count_closest(
-        generated_scene(c.write, c.depth, c.name), cost_rays,
+        c.scene(), cost_rays,
         [&](const Objects& objects) { return std::make_unique<BvhAccel>(objects, settings); });
     return n.per_ray(Counter::nodes_visited) * sah_traversal_cost + n.per_ray(Counter::intersection_tests) * sah_intersect_cost;
 }

@@ -46,6 +46,18 @@ inline bool agrees_with_brute_force(const agreement::Build& build, int file_rays
     return agreement::check_hard_cases(build) && passed;
 }
 
+// One generated scene an open exercise's cost is measured on (07.7's, 10.7's): its name, generator
+// and depth, and the reference's cost per ray there (the exercise's [open_reference_costs] check
+// holds it to the solution's).
+struct CostScene {
+    const char* name;
+    void (*write)(std::ostream&, int);
+    int depth;
+    double reference;
+
+    NffScene scene() const { return generated_scene(write, depth, name); }
+};
+
 // The counts of `rays` closest-hit queries (agreement::seeded_ray, seed 77: from the view's eye and
 // from in and around the scene) of the structure make(objects) builds over a scene's objects, and
 // how many rays were cast.
