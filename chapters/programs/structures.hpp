@@ -31,6 +31,7 @@ struct StructureTuning {
     int max_depth = -1;            // --max-depth; -1: the structure's own
     std::string split;             // --split, "sah", "median" or "open"; empty: the structure's own
     std::uint32_t table_size = 0;  // --table-size, a hash table's size; 0: the structure's own
+    std::string table_hash;        // --table-hash, "mod" or "open" (09.6); empty: the structure's own
     std::string mailbox;           // --mailbox, "object" or "cache" (08.4); empty: the structure's own
 };
 
