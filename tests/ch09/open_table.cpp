@@ -73,9 +73,17 @@ const Build through_hash{"the hashed grid through your hash (09.6)",
                              return wrong.empty() ? "\n  every lookup of this scene's table answered right" : wrong;
                          }};
 
+// One sphere: at lambda 1 its grid is one cell, occupied, so the budget is one bucket.
+void write_one_sphere(std::ostream& out, int)
+{
+    out << "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 0.01\nresolution 8 8\nb 0 0 0\nl 2 2 5\n"
+           "f 1 1 1 1 0 0 0 0\ns 0 0 0 1\n";
+}
+
 // The contract's lookups, called directly: two tables built one after the other (a lattice and
-// gears), then every cell of each looked up, the first table's after the second was built. A hash
-// that keeps its numbers anywhere but TableHash answers for the second table in the first.
+// gears), then every cell of each looked up, the first table's after the second was built (a hash
+// that keeps its numbers anywhere but TableHash answers for the second table in the first); and a
+// table of one occupied cell, whose budget is M = 1.
 bool check_lookups()
 {
     const auto build = [](void (*write)(std::ostream&, int), int depth, const char* name, float lambda) {
@@ -86,8 +94,10 @@ bool check_lookups()
     };
     const std::unique_ptr<HashedGrid> first = build(write_lattice, 4, "lattice 4", 64.0f);
     const std::unique_ptr<HashedGrid> second = build(write_gears, 1, "gears 1", 16.0f);
+    const std::unique_ptr<HashedGrid> one = build(write_one_sphere, 0, "one sphere", 1.0f);
     for (const auto& [grid, which] : {std::pair{first.get(), "the first table, lattice 4 at lambda 64"},
-                                      std::pair{second.get(), "the second table, gears 1 at lambda 16"}}) {
+                                      std::pair{second.get(), "the second table, gears 1 at lambda 16"},
+                                      std::pair{one.get(), "a table of one sphere at lambda 1 (one cell)"}}) {
         const std::string wrong = first_wrong_lookup(*grid, which);
         INFO(wrong << "\n(each occupied cell found with its own key, each empty one not found; the first table "
                       "looked up after the second was built)");
