@@ -199,8 +199,7 @@ int main(int argc, char** argv)
                        "and table size, 09.6)");
         };
         const auto take_table_size = [&](const CommandLine& cli) {
-            if (cli.given("--table-hash") && table_hash != "mod" && table_hash != "open")
-                throw InputError("--table-hash takes mod or open, got '" + table_hash + "'");
+            check_choice(cli, "--table-hash", table_hash, {"mod", "open"});
             if (table_hash == "open" && cli.given("--table-size"))
                 throw InputError("--table-size is the size of p mod M; with --table-hash open your 09.6 chooses it");
             o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
