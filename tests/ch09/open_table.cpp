@@ -162,8 +162,8 @@ void check_tier(double tier)
 }
 
 // The lesson's other rows: p mod M with M chosen three ways, the largest prime within the budget
-// (the chapter's rule), the largest power of two within it, and the budget itself; and a
-// multiplicative hash at the budget.
+// (the chapter's rule), the largest power of two within it, and the budget itself; a
+// multiplicative hash at the budget; and the chapter's default, which the budget does not allow.
 std::uint32_t p_mod_M(const TableHash& h, std::int32_t p) { return static_cast<std::uint32_t>(p) % h.M; }
 
 // Knuth's multiplicative hash: p times 2^32 over the golden ratio, its high bits scaled to M.
@@ -201,6 +201,17 @@ TableHash the_budget(const std::vector<std::int32_t>& cells, cell3)
     return h;
 }
 
+// The chapter's default (HashedGrid's table_size 0): the least prime at least twice the occupied
+// cells, a load of 0.5, past 09.6's budget (measured through a budget that allows it).
+std::uint32_t twice_the_cells(std::size_t occupied) { return prime_at_least(2 * static_cast<std::uint64_t>(std::max<std::size_t>(1, occupied))); }
+
+TableHash chapter_default(const std::vector<std::int32_t>& cells, cell3)
+{
+    TableHash h;
+    h.M = twice_the_cells(cells.size());
+    return h;
+}
+
 }  // namespace
 
 // The graded cases: "choose_table_hash, bucket_of (open): a correct hash costing at most 2 times the
@@ -218,7 +229,9 @@ TEST_CASE("09.6's stored reference costs are the reference hash's", "[.][open_re
         for (const auto& [name, hashing] : {std::pair{"p mod the largest prime", OpenHashing{largest_prime, p_mod_M}},
                                             std::pair{"p mod the largest power of two", OpenHashing{largest_power_of_two, p_mod_M}},
                                             std::pair{"p mod M at the budget", OpenHashing{the_budget, p_mod_M}},
-                                            std::pair{"Knuth's multiplicative hash at the budget", OpenHashing{the_budget, golden}}}) {
+                                            std::pair{"Knuth's multiplicative hash at the budget", OpenHashing{the_budget, golden}},
+                                            std::pair{"the chapter's default (twice the budget's buckets)",
+                                                      OpenHashing{chapter_default, p_mod_M, twice_the_cells}}}) {
             const double keys = keys_per_lookup(c, hashing);
             others += std::string(", ") + name + " " + fixed(keys, 4) + " (" + fixed(keys / reference, 3) + "x)";
         }
