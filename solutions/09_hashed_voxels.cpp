@@ -167,7 +167,8 @@ TableHash choose_table_hash(const std::vector<std::int32_t>& cells, cell3 n)
     constexpr int tries = 32;
     for (int k = 0; k < tries; ++k) {
         tried = TableHash{};
-        tried.M = std::max<std::uint32_t>(1, budget - static_cast<std::uint32_t>(std::uint64_t{budget} * k / (2 * tries)));
+        const auto fewer = static_cast<std::uint32_t>(std::uint64_t{budget} * k / (2 * tries));
+        tried.M = std::max<std::uint32_t>(1, budget - fewer);
         consider();
     }
     std::uint64_t lcg = 12345;
@@ -176,7 +177,8 @@ TableHash choose_table_hash(const std::vector<std::int32_t>& cells, cell3 n)
         tried.word[0] = 1;
         tried.word[1] = static_cast<std::uint32_t>(n.z);
         tried.word[2] = static_cast<std::uint32_t>(n.y);
-        tried.M = std::max<std::uint32_t>(1, budget - static_cast<std::uint32_t>(std::uint64_t{budget} * (k % 4) / 64));
+        const auto fewer = static_cast<std::uint32_t>(std::uint64_t{budget} * (k % 4) / 64);
+        tried.M = std::max<std::uint32_t>(1, budget - fewer);
         lcg = lcg * 6364136223846793005u + 1442695040888963407u;
         // The layers one after the other first (B = n.x n.z and just past), then B at random.
         tried.word[3] = k < 8 ? static_cast<std::uint32_t>(n.x) * static_cast<std::uint32_t>(n.z) + k

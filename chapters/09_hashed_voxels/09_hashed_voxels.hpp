@@ -159,20 +159,22 @@ struct TableHash {
 };
 static_assert(sizeof(TableHash) == 64, "the hash's own numbers are the budget's 64 bytes");
 
-// EXERCISE 09.6 (open): the hash and the table size. The hashed grid through your hash (hashed_grid.hpp's
-// HashedGrid built with OpenHashing, given) asks choose_table_hash once per build, with the
-// addresses of its occupied cells, then files each cell p in bucket bucket_of(hash, p) (by increasing
-// address within a bucket) and looks a cell up by comparing keys along its bucket, from its first
-// cell, each key compared counted (Counter::table_probes). Any design: which M, which hash of p (or
-// of the cell's (i, j, l): p = (i n.y + j) n.z + l), computed from the cells or fixed.
+// EXERCISE 09.6 (open): the hash and the table size. The hashed grid through your hash
+// (hashed_grid.hpp's HashedGrid built with OpenHashing, given) asks choose_table_hash once per
+// build, with the addresses of its occupied cells, then files each cell p in bucket
+// bucket_of(hash, p) (by increasing address within a bucket) and looks a cell up by comparing keys
+// along its bucket, from its first cell, each key compared counted (Counter::table_probes). Any
+// design: which M, which hash of p (or of the cell's (i, j, l): p = (i n.y + j) n.z + l), computed
+// from the cells or fixed.
 // The lesson's section "The hash and the table size (EXERCISE 09.6, open)" poses the problem.
 //  - Correct (the gate): M is 1 to max_table_buckets(cells.size()); bucket_of(hash, p) lies in
-//    [0, M) for every address of the grid (0 to n.x n.y n.z - 1), and gives the same bucket every time
-//    for the same hash and p, whatever other tables were built since (all bucket_of knows is `hash`).
-//    Then the table finds every occupied cell and no other: the grader looks up every cell, occupied
-//    and empty, of two tables built one after the other and of a table of one cell (where the budget
-//    is M = 1), and names the first lookup answered wrong. The grid through your hash must answer every ray as brute force does (the scenes 09.A
-//    uses, ties, a huge floor, far away). A wrong answer scores 0 for the whole exercise.
+//    [0, M) for every address of the grid (0 to n.x n.y n.z - 1), and gives the same bucket every
+//    time for the same hash and p, whatever other tables were built since (all bucket_of knows is
+//    `hash`). Then the table finds every occupied cell and no other: the grader looks up every
+//    cell, occupied and empty, of two tables built one after the other and of a table of one cell
+//    (where the budget is M = 1), and names the first lookup answered wrong. The grid through your
+//    hash must answer every ray as brute force does (the scenes 09.A uses, ties, a huge floor, far
+//    away). A wrong answer scores 0 for the whole exercise.
 //  - Cheap (the score): keys compared per lookup (table_probes over table_lookups: 1 is a cell
 //    alone in its bucket or first in it), counted on the cells seeded rays walk through on three of
 //    the kit's generated scenes (the lesson lists them). Your cost is the geometric mean over the

@@ -598,7 +598,8 @@ private:
             by_address, hash_.M, [&](std::int32_t p, std::uint32_t) { return hashing_.bucket(hash_, p); });
         if (open_build_.lost)
             notice("the hashed grid: your bucket_of (09.6) gave cell " + std::to_string(open_build_.lost_p) +
-                   " bucket " + std::to_string(open_build_.lost_bucket) + " of a table of M = " + std::to_string(hash_.M) +
+                   " bucket " + std::to_string(open_build_.lost_bucket) + " of a table of M = " +
+                   std::to_string(hash_.M) +
                    (open_build_.lost_bucket >= hash_.M ? ", past its last" : ", another than the first time asked") +
                    ": that cell is lost, and rays through it miss its objects");
         return collisions;

@@ -18,8 +18,8 @@ namespace {
 std::string cell_words(const GridShape& shape, std::int32_t p)
 {
     const cell3 s = shape.strides();
-    return "cell " + std::to_string(p) + " (i " + std::to_string(p / s.x) + ", j " + std::to_string(p / s.y % shape.n.y) +
-           ", l " + std::to_string(p % shape.n.z) + ")";
+    return "cell " + std::to_string(p) + " (i " + std::to_string(p / s.x) + ", j " +
+           std::to_string(p / s.y % shape.n.y) + ", l " + std::to_string(p % shape.n.z) + ")";
 }
 
 // Whether the grid's open table keeps the contract, in words: empty when it does; else the first
@@ -203,7 +203,10 @@ TableHash the_budget(const std::vector<std::int32_t>& cells, cell3)
 
 // The chapter's default (HashedGrid's table_size 0): the least prime at least twice the occupied
 // cells, a load of 0.5, past 09.6's budget (measured through a budget that allows it).
-std::uint32_t twice_the_cells(std::size_t occupied) { return prime_at_least(2 * static_cast<std::uint64_t>(std::max<std::size_t>(1, occupied))); }
+std::uint32_t twice_the_cells(std::size_t occupied)
+{
+    return prime_at_least(2 * static_cast<std::uint64_t>(std::max<std::size_t>(1, occupied)));
+}
 
 TableHash chapter_default(const std::vector<std::int32_t>& cells, cell3)
 {
@@ -226,12 +229,13 @@ TEST_CASE("09.6's stored reference costs are the reference hash's", "[.][open_re
     for (const CostScene& c : cost_scenes) {
         const double reference = your_keys_per_lookup(c);
         std::string others;
-        for (const auto& [name, hashing] : {std::pair{"p mod the largest prime", OpenHashing{largest_prime, p_mod_M}},
-                                            std::pair{"p mod the largest power of two", OpenHashing{largest_power_of_two, p_mod_M}},
-                                            std::pair{"p mod M at the budget", OpenHashing{the_budget, p_mod_M}},
-                                            std::pair{"Knuth's multiplicative hash at the budget", OpenHashing{the_budget, golden}},
-                                            std::pair{"the chapter's default (twice the budget's buckets)",
-                                                      OpenHashing{chapter_default, p_mod_M, twice_the_cells}}}) {
+        const std::pair<const char*, OpenHashing> rows[] = {
+            {"p mod the largest prime", {largest_prime, p_mod_M}},
+            {"p mod the largest power of two", {largest_power_of_two, p_mod_M}},
+            {"p mod M at the budget", {the_budget, p_mod_M}},
+            {"Knuth's multiplicative hash at the budget", {the_budget, golden}},
+            {"the chapter's default (twice the budget's buckets)", {chapter_default, p_mod_M, twice_the_cells}}};
+        for (const auto& [name, hashing] : rows) {
             const double keys = keys_per_lookup(c, hashing);
             others += std::string(", ") + name + " " + fixed(keys, 4) + " (" + fixed(keys / reference, 3) + "x)";
         }
