@@ -36,6 +36,7 @@ enum class Counter {
     table_lookups,          // hash-table lookups of the hashed grid (chapter 09)
     table_lookups_skipped,  // cells whose occupancy bit was off: no lookup (chapter 09)
     nodes_visited,          // tree nodes whose box a ray was tested against (chapter 10)
+    table_probes,           // keys compared in a bucket of the hashed grid's open table (chapter 09, 09.6)
     count_  // the number of counters, not a counter
 };
 

@@ -16,7 +16,7 @@
 # kept under BUILD_DIR/students/NAME/, and BUILD_DIR/class.html links them all; below the students,
 # it gives each exercise's share at full marks, mean points and most failed cases (grade_report
 # --class-page computes them from the results files), also written to EXERCISES as CSV.
-# The open exercises' leaderboards (07.7's, 08.4's and 10.7's costs, lower first; only correct answers ranked) close the
+# The open exercises' leaderboards (07.7's, 08.4's, 09.6's and 10.7's costs, lower first; only correct answers ranked) close the
 # class page, and BUILD_DIR/leaderboard.html holds them alone, to share with the class: -D
 # LEADERBOARD=pseudonyms shows each student there by a pseudonym (the class page lists each beside
 # the name), from -D PSEUDONYM_KEY=any text you keep to yourself (the same key, the same pseudonyms

@@ -367,6 +367,17 @@ rt_same_render(09_hashed_voxels.tiny_table_stadium 09_hashed_voxels FIRST --tabl
   ARGS --width 64 --classic GENERATE stadium --depth 2)
 rt_same_render(09_hashed_voxels.hashed_threads_stadium 09_hashed_voxels FIRST --threads 1 SECOND --threads 2
   ARGS --width 64 GENERATE stadium --depth 2)
+# Your hash (09.6, --table-hash open) files the same cells in other buckets: the same picture, and
+# its lookups compare keys the program counts.
+rt_same_render(09_hashed_voxels.open_hash_as_mod_lattice 09_hashed_voxels FIRST --table-hash mod SECOND --table-hash open
+  ARGS --width 64 --classic GENERATE lattice --depth 6)
+rt_expect_exit(09_hashed_voxels.open_hash_stats 09_hashed_voxels 0
+  "table_probes=[1-9][0-9]*\ntable_lookups=[1-9][0-9]*\n.*table_hash=open\n"
+  --table-hash open --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/09_hashed_voxels_open_stats.png")
+rt_expect_exit(09_hashed_voxels.unknown_table_hash 09_hashed_voxels 2 "--table-hash takes mod or open, got 'prime'"
+  --table-hash prime)
+rt_expect_exit(09_hashed_voxels.table_size_with_open_hash 09_hashed_voxels 2
+  "--table-size is the size of p mod M; with --table-hash open your 09.6 chooses it" --table-hash open --table-size 17)
 rt_expect_exit(09_hashed_voxels.figure_stats 09_hashed_voxels 0
   "rays_primary=600\n.*accel=hashed\nobjects=21250\n.*table_lookups_skipped=[1-9][0-9]*\ngrid_resolution=361x42x361\n.*table_load=0\\.[0-9]+\n"
   --width 30 --height 20 --stats --out "${CMAKE_CURRENT_BINARY_DIR}/programs/09_hashed_voxels_stats.png")

@@ -207,8 +207,7 @@ int main(int argc, char** argv)
                        "the default) or cache (your ray cache, 1 KB a thread, 08.4)");
         };
         const auto check_mailbox = [&](const CommandLine& cli) {
-            if (cli.given("--mailbox") && mailbox != "object" && mailbox != "cache")
-                throw InputError("--mailbox takes object or cache, got '" + mailbox + "'");
+            check_choice(cli, "--mailbox", mailbox, {"object", "cache"});
         };
         return scene_program_main(
             argc, argv, o, scene_program(o),

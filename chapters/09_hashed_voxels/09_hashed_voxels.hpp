@@ -19,6 +19,8 @@
 
 #include "07_uniform_grid/07_uniform_grid.hpp"
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -140,5 +142,51 @@ const HashedCell* find_cell(const HashTable& table, std::int32_t p, std::uint32_
 // DETAIL END
 bool closest_in_hashed_cell(const HashTable& table, const OccupancyBits& bits, const GridWalk& walk, std::uint32_t r,
                             const Ray& ray, Interval range, const Objects& objects, ObjectHit& best);
+
+// The budget of EXERCISE 09.6: at most one bucket per occupied cell (a load of at least 1: the
+// table then takes at most 16 bytes an occupied cell, its 12-byte cell and a 4-byte bucket offset,
+// where the chapter's default, at a load of 0.5, takes 20), and the hash's own numbers in TableHash,
+// 64 bytes, one cache line. Nothing else: no static, global or thread_local of yours.
+inline std::uint32_t max_table_buckets(std::size_t occupied)
+{
+    return occupied > 0 ? static_cast<std::uint32_t>(occupied) : 1u;
+}
+
+// Your hash (09.6): the table's size M and fifteen numbers of your choosing, read by bucket_of.
+struct TableHash {
+    std::uint32_t M = 0;                   // buckets, 1 to max_table_buckets(occupied cells)
+    std::array<std::uint32_t, 15> word{};  // yours: multipliers, shifts, strides, a seed...
+};
+static_assert(sizeof(TableHash) == 64, "the hash's own numbers are the budget's 64 bytes");
+
+// EXERCISE 09.6 (open): the hash and the table size. The hashed grid through your hash
+// (hashed_grid.hpp's HashedGrid built with OpenHashing, given) asks choose_table_hash once per
+// build, with the addresses of its occupied cells, then files each cell p in bucket
+// bucket_of(hash, p) (by increasing address within a bucket) and looks a cell up by comparing keys
+// along its bucket, from its first cell, each key compared counted (Counter::table_probes). Any
+// design: which M, which hash of p (or of the cell's (i, j, l): p = (i n.y + j) n.z + l), computed
+// from the cells or fixed.
+// The lesson's section "The hash and the table size (EXERCISE 09.6, open)" poses the problem.
+//  - Correct (the gate): M is 1 to max_table_buckets(cells.size()); bucket_of(hash, p) lies in
+//    [0, M) for every address of the grid (0 to n.x n.y n.z - 1), and gives the same bucket every
+//    time for the same hash and p, whatever other tables were built since (all bucket_of knows is
+//    `hash`). Then the table finds every occupied cell and no other: the grader looks up every
+//    cell, occupied and empty, of two tables built one after the other and of a table of one cell
+//    (where the budget is M = 1), and names the first lookup answered wrong. The grid through your
+//    hash must answer every ray as brute force does (the scenes 09.A uses, ties, a huge floor, far
+//    away). A wrong answer scores 0 for the whole exercise.
+//  - Cheap (the score): keys compared per lookup (table_probes over table_lookups: 1 is a cell
+//    alone in its bucket or first in it), counted on the cells seeded rays walk through on three of
+//    the kit's generated scenes (the lesson lists them). Your cost is the geometric mean over the
+//    scenes of yours over the reference's: at most 1.02, full points; at most 1.5, two thirds; at
+//    most 2, one third; beyond 2, none (the lesson's table gives what simpler hashes cost). It is
+//    what the class leaderboard ranks, lower first. Counts, never time.
+//  - Memory: the table's M buckets and TableHash, nothing else (the budget above).
+// Example: cells {0, 5, 9} of a 2 x 2 x 3 grid: M = 3 and p mod 3 file 0 and 9 in bucket 0 (9 found
+// after 2 keys) and 5 in bucket 2: 4 keys for the three lookups. M = 1 is correct too, at 6 keys (1,
+// 2, 3); M = 3 with p mod 4 is wrong (bucket 3 lies past the table), and so is M = 4 (past the
+// budget of 3 buckets).
+TableHash choose_table_hash(const std::vector<std::int32_t>& cells, cell3 n);
+std::uint32_t bucket_of(const TableHash& hash, std::int32_t p);
 
 }  // namespace rt

@@ -26,12 +26,15 @@ inline NffScene figure_scene()
     return generated_scene(write_stadium, figure_stadium_depth, "teapot in a stadium, depth 5");
 }
 
-// Chapter 08's structures and the hashed grid (programs/structures.hpp).
+// Chapter 08's structures and the hashed grid (programs/structures.hpp): its cells in bucket p mod M,
+// or with --table-hash open in the buckets of your hash (09.6).
 inline Structures structures()
 {
     return followed_by(ch08::structures(),
                        {{"hashed", "the hashed grid, its occupied cells in a hash table", 9, default_hashed_lambda,
-                         {"--lambda", "--table-size"}, [](const Objects& o, const StructureTuning& t) {
+                         {"--lambda", "--table-size", "--table-hash"}, [](const Objects& o, const StructureTuning& t) {
+                             if (t.table_hash == "open")
+                                 return std::make_unique<HashedGrid>(o, t.lambda, OpenHashing{});
                              return std::make_unique<HashedGrid>(o, t.lambda, t.table_size);
                          }}});
 }

@@ -45,6 +45,7 @@ SceneProgram scene_program(const Options& o)
              {"lookups", Counter::table_lookups, "table lookups per pixel"}},
             &o.structure,
             {{"cells_visited", Counter::cells_visited},
+             {"table_probes", Counter::table_probes},
              {"table_lookups", Counter::table_lookups},
              {"table_lookups_skipped", Counter::table_lookups_skipped}},
             {}};
@@ -189,11 +190,18 @@ int main(int argc, char** argv)
 {
     return run_program("09_hashed_voxels", [&] {
         Options o;
+        std::string& table_hash = o.structure.tuning.table_hash;
         const auto table_size = [&](CommandLine& cli) {
             cli.option("--table-size", o.table_size,
                        "the hash table's size M (0: the least prime at least twice the occupied cells)", 0, 1 << 30);
+            cli.option("--table-hash", table_hash,
+                       "how the hashed grid files its cells: mod (bucket p mod M, the default) or open (your hash "
+                       "and table size, 09.6)");
         };
-        const auto take_table_size = [&](const CommandLine&) {
+        const auto take_table_size = [&](const CommandLine& cli) {
+            check_choice(cli, "--table-hash", table_hash, {"mod", "open"});
+            if (table_hash == "open" && cli.given("--table-size"))
+                throw InputError("--table-size is the size of p mod M; with --table-hash open your 09.6 chooses it");
             o.structure.tuning.table_size = static_cast<std::uint32_t>(o.table_size);
         };
         return scene_program_main(

@@ -230,8 +230,7 @@ int main(int argc, char** argv)
             cli.option("--split", t.split, "how a BVH node is split: sah (the surface area heuristic), median, or open (your own build, 10.7)");
         };
         const auto check_tree_options = [&](const CommandLine& cli) {
-            if (cli.given("--split") && t.split != "sah" && t.split != "median" && t.split != "open")
-                throw InputError("--split takes sah, median or open, got '" + t.split + "'");
+            check_choice(cli, "--split", t.split, {"sah", "median", "open"});
             if (o.structure.accel == "hgrid" && t.max_depth > HGridAccel::max_hgrid_depth)
                 throw InputError("--max-depth for the hierarchy of grids must be between 0 and " +
                                  std::to_string(HGridAccel::max_hgrid_depth) + ", got " + std::to_string(t.max_depth));

@@ -13,6 +13,7 @@
 #include "02_spheres_triangles/scene_query.hpp"
 #include "common/cli.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <initializer_list>
@@ -31,6 +32,7 @@ struct StructureTuning {
     int max_depth = -1;            // --max-depth; -1: the structure's own
     std::string split;             // --split, "sah", "median" or "open"; empty: the structure's own
     std::uint32_t table_size = 0;  // --table-size, a hash table's size; 0: the structure's own
+    std::string table_hash;        // --table-hash, "mod" or "open" (09.6); empty: the structure's own
     std::string mailbox;           // --mailbox, "object" or "cache" (08.4); empty: the structure's own
     std::string resolution;        // --resolution, "rule" or "open" (07.7); empty: the structure's own
 };
@@ -93,6 +95,15 @@ inline Structures followed_by(Structures earlier, std::initializer_list<Structur
 }
 
 // "a, b or c": the names of the structures that pass `keep`, for help and messages.
+// Names in words: "a", "a or b", "a, b or c".
+inline std::string one_of(const std::vector<std::string>& names)
+{
+    std::string text;
+    for (std::size_t k = 0; k < names.size(); ++k)
+        text += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+    return text;
+}
+
 inline std::string structure_names(
     const Structures& list, const std::function<bool(const Structure&)>& keep = [](const Structure&) { return true; })
 {
@@ -100,10 +111,16 @@ inline std::string structure_names(
     for (const Structure& s : list)
         if (keep(s))
             names.push_back(s.name);
-    std::string text;
-    for (std::size_t k = 0; k < names.size(); ++k)
-        text += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
-    return text;
+    return one_of(names);
+}
+
+// A word option that takes one of `choices` (--mailbox, --table-hash, --split): when given anything
+// else, the program stops with "--split takes sah, median or open, got 'x'".
+inline void check_choice(const CommandLine& cli, const std::string& name, const std::string& value,
+                         const std::vector<std::string>& choices)
+{
+    if (cli.given(name) && std::find(choices.begin(), choices.end(), value) == choices.end())
+        throw InputError(name + " takes " + one_of(choices) + ", got '" + value + "'");
 }
 
 // The entry called `name`; an unknown name is bad input, answered with the names there are.

@@ -229,7 +229,8 @@ bool write_leaderboard_page(const std::string& path, const std::vector<Leaderboa
 table{border-collapse:collapse;margin:0.5em 0 1.5em}td.ok{background:#dfd}td.part{background:#ffd}</style>
 </head><body><h1>Leaderboard</h1>
 <p>Each open exercise's cost as the grader counts it (objects tested and cells visited per ray for 07.7; intersection
-tests per ray for 08.4; nodes visited and objects tested per ray for 10.7; never time),
+tests per ray for 08.4; keys compared per table lookup for 09.6; nodes visited and objects tested per ray for 10.7;
+never time),
 lower first, against the reference solution's. Only correct answers are ranked.</p>
 )" << leaderboards_html(boards, false)
         << "</body></html>\n";

@@ -1,4 +1,4 @@
-// An open exercise's cost and tiers (08.4's and 10.7's graded cases): seeded rays cast over a
+// An open exercise's cost and tiers (08.4's, 09.6's and 10.7's graded cases): seeded rays cast over a
 // generated scene and counted, the student's cost over the reference's as a geometric mean over the
 // scenes, and one tier case: the gate first, then (only for answers that passed it: only those are
 // ranked) the measure reported for the leaderboard and the tier asked.
