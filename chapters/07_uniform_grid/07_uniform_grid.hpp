@@ -355,9 +355,10 @@ inline std::string grid_resolution_problem(const Bounds& box, const std::vector<
 //    the scene and what is wrong.
 //  - Cheap (the score): the cost of a closest-hit ray is its objects tested plus its cells visited
 //    times grid_cell_step_cost, counted on seeded rays over four of the kit's generated scenes (the
-//    lesson lists them: two of a teapot in a stadium among them). Your cost is the geometric mean over the scenes of your cost per ray over
-//    the reference's: at most 1.02, full points; at most 1.5, two thirds; at most 2, one third;
-//    beyond 2, none. It is what the class leaderboard ranks, lower first. Counts, never time.
+//    lesson lists them: two of a teapot in a stadium among them). Your cost is the geometric mean
+//    over the scenes of your cost per ray over the reference's: at most 1.02, full points; at most
+//    1.5, two thirds; at most 2, one third; beyond 2, none. It is what the class leaderboard
+//    ranks, lower first. Counts, never time.
 //  - Memory: the budget above; anything you compute on the way is yours.
 // Example: 64 boxes of side 0.1, one at the centre of each 0.5 x 0.5 square of a floor
 // 4 x 0.1 x 4: 8 x 1 x 8 (07.1's answer at lambda 1) takes 65 offsets and 64 references, 129
