@@ -103,21 +103,10 @@ double chosen_cost(const CostScene& c)
     return cost_per_ray(c, [](const Objects& o) { return std::make_unique<UniformGrid>(o, ChosenResolution{}); });
 }
 
-// One tier: the gate, then (for an answer that passed it: only those are ranked) the cost at most
-// `tier` times the reference's, the geometric mean over the scenes of the ratio of costs per ray.
-void check_tier(double tier)
-{
-    open_exercise::check_tier(
-        check_gate,
-        [](std::string& words) { return open_exercise::geometric_ratio(cost_scenes, chosen_cost, "per ray", words); },
-        "07.7 cost", "your grid's cost (objects tested + cells visited, per closest-hit ray)", tier);
-}
-
 }  // namespace
 
-// The graded cases: "choose_grid_resolution (open): a valid shape costing at most 2 times the reference's", the same at
-// most 1.5 times and at most 1.02 times (tests/grader/open_tiers.hpp).
-OPEN_EXERCISE_TIERS("choose_grid_resolution (open): a valid shape", "", "07.7", 4, check_tier)
+OPEN_EXERCISE_TIERS("choose_grid_resolution (open): a valid shape", "", "07.7", 4, check_gate, cost_scenes, chosen_cost,
+                    "per ray", "your grid's cost (objects tested + cells visited, per closest-hit ray)")
 
 // The kit's own check (not graded; grader.ch07.open_reference_costs_are_the_solutions runs it on
 // the solutions): the reference costs above are what the reference resolution measures now, and

@@ -105,15 +105,17 @@ double geometric_ratio(const Scenes& scenes, Cost&& cost, const std::string& uni
 }
 
 // One tier case: gate() first (false: the failed checks say why, and nothing is measured or
-// ranked), then ratio(words), reported as `measure` to three decimals (as the leaderboard shows it),
+// ranked), then the geometric mean over `scenes` of cost(scene) over the reference's (each scene's
+// figures said in `unit`), reported as `measure` to three decimals (as the leaderboard shows it),
 // at most `tier`. `what` names the cost in the message: "your tree's cost (...)".
-template <class Gate, class Ratio>
-void check_tier(Gate&& gate, Ratio&& ratio_of, const std::string& measure, const std::string& what, double tier)
+template <class Gate, class Scenes, class Cost>
+void check_tier(Gate&& gate, const Scenes& scenes, Cost&& cost, const std::string& unit, const std::string& measure,
+                const std::string& what, double tier)
 {
     if (!gate())
         return;
     std::string words;
-    const double ratio = ratio_of(words);
+    const double ratio = geometric_ratio(scenes, cost, unit, words);
     report_measure(measure, std::round(ratio * 1000.0) / 1000.0, 1.0, words);
     INFO(what << " is " << fixed(ratio, 3) << " times the reference's (the geometric mean over the scenes);" << words
               << "\nthis tier asks at most " << fixed(tier, 2) << " times");
@@ -124,8 +126,18 @@ void check_tier(Gate&& gate, Ratio&& ratio_of, const std::string& measure, const
 
 // An open exercise's three graded cases, one a tier (at most 2, 1.5 and 1.02 times the reference's
 // cost: the points add up by tier), each worth `points`: `what` opens each case's name ("build_bvh
-// (open): a correct tree"), `unit` ends it ("" or " tests"), and check(tier) grades it.
-#define OPEN_EXERCISE_TIERS(what, unit, number, points, check)                                     \
-    GRADED_TEST(what " costing at most 2 times the reference's" unit, number, points) { check(2.0); }   \
-    GRADED_TEST(what " costing at most 1.5 times the reference's" unit, number, points) { check(1.5); } \
-    GRADED_TEST(what " costing at most 1.02 times the reference's" unit, number, points) { check(1.02); }
+// (open): a correct tree"), `unit` ends it ("" or " tests"), and each is check_tier(gate, scenes,
+// cost, the scenes' unit, the exercise's measure ("10.7 cost"), the cost in words, its tier).
+#define OPEN_EXERCISE_TIERS(what, unit, number, points, gate, scenes, cost, scene_unit, cost_words)                 \
+    GRADED_TEST(what " costing at most 2 times the reference's" unit, number, points)                               \
+    {                                                                                                               \
+        rt::grader::open_exercise::check_tier(gate, scenes, cost, scene_unit, number " cost", cost_words, 2.0);     \
+    }                                                                                                               \
+    GRADED_TEST(what " costing at most 1.5 times the reference's" unit, number, points)                             \
+    {                                                                                                               \
+        rt::grader::open_exercise::check_tier(gate, scenes, cost, scene_unit, number " cost", cost_words, 1.5);     \
+    }                                                                                                               \
+    GRADED_TEST(what " costing at most 1.02 times the reference's" unit, number, points)                            \
+    {                                                                                                               \
+        rt::grader::open_exercise::check_tier(gate, scenes, cost, scene_unit, number " cost", cost_words, 1.02);    \
+    }
