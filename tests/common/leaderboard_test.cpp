@@ -152,6 +152,22 @@ TEST_CASE("the class leaderboard ranks students by their cost, lowest first, and
     std::remove(page.c_str());
 }
 
+TEST_CASE("students of equal cost share a rank, and the next cost's rank counts them", "[grader]")
+{
+    const std::vector<rt::grader::StudentResults> students = {student("carol", 1.742), student("bob", 1.0),
+                                                              student("alice", 1.0)};
+    const auto boards = rt::grader::class_leaderboards(students, rt::grader::LeaderboardNames::names, "");
+    REQUIRE(boards.size() == 1);
+    const std::string page = "leaderboard_test_ties.html";
+    REQUIRE(rt::grader::write_leaderboard_page(page, boards));
+    const std::string html = read_file(page);
+    INFO(html);
+    CHECK(html.find("<tr><td>1</td><td>alice</td>") != std::string::npos);
+    CHECK(html.find("<tr><td>1</td><td>bob</td>") != std::string::npos);
+    CHECK(html.find("<tr><td>3</td><td>carol</td>") != std::string::npos);
+    std::remove(page.c_str());
+}
+
 TEST_CASE("with pseudonyms the shared leaderboard names no student; the same key gives the same pseudonyms", "[grader]")
 {
     const std::vector<rt::grader::StudentResults> students = {student("carol", 1.74), student("alice", 0.97)};

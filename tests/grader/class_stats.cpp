@@ -240,9 +240,13 @@ std::string leaderboards_html(const std::vector<Leaderboard>& boards, bool with_
         out << "<h3>" << escape_xml(b.measure) << "</h3>\n<table class=\"leaderboard\"><tr><th>rank</th><th>who</th>"
             << (with_names ? "<th>student</th>" : "") << "<th>" << escape_xml(b.measure) << " (lower is better; the reference: "
             << b.reference << ")</th></tr>\n";
+        size_t rank = 0;
         for (size_t k = 0; k < b.ranked.size(); ++k) {
             const LeaderboardEntry& e = b.ranked[k];
-            out << "<tr><td>" << k + 1 << "</td><td>" << escape_xml(e.shown) << "</td>"
+            // Equal costs share a rank (1, 1, 3): the order among them is only the names'.
+            if (k == 0 || e.value != b.ranked[k - 1].value)
+                rank = k + 1;
+            out << "<tr><td>" << rank << "</td><td>" << escape_xml(e.shown) << "</td>"
                 << (with_names ? "<td>" + escape_xml(e.student) + "</td>" : "") << "<td class=\""
                 << (e.value <= b.reference ? "ok" : "part") << "\">" << std::fixed << std::setprecision(3) << e.value
                 << std::defaultfloat << "</td></tr>\n";
