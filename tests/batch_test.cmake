@@ -335,3 +335,12 @@ endforeach()
 expect_whole_chapter(erin "${json_erin}" 02 "chapter 02 is still the handed-out stubs" "saying it is still the handed-out stubs")
 expect_whole_chapter(frank "${json_frank}" 02 "the submission has no 02_spheres_triangles.cpp" "saying the file is missing")
 message(STATUS "three clones graded from their exercises/: ${out}")
+
+# The open exercises assigned (OPEN_EXERCISES, as the handout takes it): a name that is not one of
+# the kit's stops the batch before any student is graded, and says which names are.
+execute_process(COMMAND "${CMAKE_COMMAND}" -D "SUBMISSIONS=${clones}" -D "BUILD_DIR=${WORK}/build" -D "CHAPTERS=01;02"
+    -D "OPEN_EXERCISES=10.8" -P "${KIT}/tests/grade_batch.cmake"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(rc EQUAL 0 OR NOT out MATCHES "grade_batch: OPEN_EXERCISES" OR NOT out MATCHES "'10\\.8' is not one" OR out MATCHES "====")
+  fail("a batch with OPEN_EXERCISES=10.8 (no such open exercise) should stop before grading anyone, and say why")
+endif()
