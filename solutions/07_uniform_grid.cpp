@@ -233,9 +233,9 @@ cell3 choose_grid_resolution(const Bounds& box, const std::vector<Bounds>& boxes
     //    where this term counts, and the line's term does not see it.
     // Weighted 2, 1 and 1/2, the weights chosen by trying a few on the scenes 07.7 is measured on
     // (the line's two terms alone stop at 1.8 and 7.4 times this cost on the teapots in a stadium;
-    // without the line's tests, the sphereflake gets 2 x 10 x 2 cells). From 1 x 1 x 1, each round tries
-    // each axis times 2, 3/2, 5/4, 4/5, 2/3 and 1/2, keeps the cheapest within the budget, and
-    // stops when none is cheaper.
+    // without the line's tests, the sphereflake gets 2 x 10 x 2 cells). From 1 x 1 x 1, each round
+    // tries each axis times 2, 3/2, 5/4, 4/5, 2/3 and 1/2, keeps the cheapest within the budget,
+    // and stops when none is cheaper.
     const vec3 e = box.extent();
     const double area[3] = {static_cast<double>(e.y) * e.z, static_cast<double>(e.x) * e.z,
                             static_cast<double>(e.x) * e.y};

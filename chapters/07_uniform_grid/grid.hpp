@@ -628,6 +628,22 @@ void for_each_listed(const Grid& grid, int p, F&& f)
         f(static_cast<int>(grid.object_index[i]));
 }
 
+// A cell's closest hit by 07.6's rules over the objects for_each_object hands to its function (a
+// grid's cell, a hashed table's), each asked with ask(k, range, hit) in the range that beats `best`
+// and kept when no farther than the cell's `exit`. Returns whether `best` changed. The given grids
+// that ask otherwise than 07.6 does (08.4's ray cache, 09.6's open table) walk their cells with it.
+template <class ForEachObject, class Ask>
+bool closest_in_listed(ForEachObject&& for_each_object, float exit, Interval range, ObjectHit& best, Ask&& ask)
+{
+    bool changed = false;
+    for_each_object([&](int k) {
+        ObjectHit h;
+        if (ask(k, closer_than(range, best, k), h) && h.t <= exit)
+            best = h, changed = true;
+    });
+    return changed;
+}
+
 // Whether any object a grid's cell p lists is hit, each asked with test(k): the any-hit cell of
 // every grid that lists its objects in two flat arrays.
 template <class Test>

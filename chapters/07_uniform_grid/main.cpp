@@ -234,8 +234,7 @@ int main(int argc, char** argv)
                        "the default) or open (your choose_grid_resolution, 07.7)");
         };
         const auto check_resolution = [&](const CommandLine& cli) {
-            if (cli.given("--resolution") && resolution != "rule" && resolution != "open")
-                throw InputError("--resolution takes rule or open, got '" + resolution + "'");
+            check_choice(cli, "--resolution", resolution, {"rule", "open"});
         };
         return scene_program_main(
             argc, argv, o, scene_program(o),

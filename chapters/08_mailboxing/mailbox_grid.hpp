@@ -135,14 +135,7 @@ private:
 template <class Ask>
 bool closest_in_cell_asking(const Grid& grid, const GridWalk& walk, Interval range, ObjectHit& best, Ask&& ask)
 {
-    const float exit = walk.cell_exit();
-    bool changed = false;
-    for_each_listed(grid, walk.p, [&](int k) {
-        ObjectHit h;
-        if (ask(k, closer_than(range, best, k), h) && h.t <= exit)
-            best = h, changed = true;
-    });
-    return changed;
+    return closest_in_listed([&](auto&& f) { for_each_listed(grid, walk.p, f); }, walk.cell_exit(), range, best, ask);
 }
 
 // One thread's ray cache and ray counter (RayCacheGrid): signatures 1, 2, ..., 2^32 - 1, then 1

@@ -265,15 +265,13 @@ private:
             const HashedCell* cell = open_cell(w);
             if (!cell)
                 return false;
-            const float exit = w.cell_exit();
-            bool changed = false;
-            for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i) {
-                const int k = static_cast<int>(table_.object_index[i]);
-                ObjectHit h;
-                if (objects.intersect(k, ray, closer_than(range, best, k), h) && h.t <= exit)
-                    best = h, changed = true;
-            }
-            return changed;
+            const auto each_listed = [&](auto&& f) {
+                for (std::uint32_t i = cell->first; i < cell->first + cell->count; ++i)
+                    f(static_cast<int>(table_.object_index[i]));
+            };
+            return closest_in_listed(each_listed, w.cell_exit(), range, best, [&](int k, Interval r, ObjectHit& h) {
+                return objects.intersect(k, ray, r, h);
+            });
         };
         return grid_closest(shape_, walk, ray, range, objects, hit, query, next_cell);
     }

@@ -94,7 +94,6 @@ inline Structures followed_by(Structures earlier, std::initializer_list<Structur
     return earlier;
 }
 
-// "a, b or c": the names of the structures that pass `keep`, for help and messages.
 // Names in words: "a", "a or b", "a, b or c".
 inline std::string one_of(const std::vector<std::string>& names)
 {
@@ -104,6 +103,7 @@ inline std::string one_of(const std::vector<std::string>& names)
     return text;
 }
 
+// "a, b or c": the names of the structures that pass `keep`, for help and messages.
 inline std::string structure_names(
     const Structures& list, const std::function<bool(const Structure&)>& keep = [](const Structure&) { return true; })
 {
