@@ -233,11 +233,15 @@ private:
                 prefetch(&tree_.blocks[node.first[i]], sizeof(FourTriangles));
             else if (node.count[i] == 0)
                 prefetch(&tree_.nodes[node.first[i]], sizeof(WideNode));
-            const Entry c = child(node, i, t0[i]);
+            // Written straight into its slot, field by field: an Entry built aside and copied in
+            // was stored in four narrow pieces and read back as one 8-byte word, which the
+            // processor cannot forward from its store buffer (a stall of a dozen cycles a push,
+            // 12% of the closest-hit walk on the pyramid by perf; chapters/benchmark/README.md,
+            // "Chapter 10's steps", step 9).
             int j = top_++;
-            for (; j > base && stack_[j - 1].t < c.t; --j)
+            for (; j > base && stack_[j - 1].t < t0[i]; --j)
                 stack_[j] = stack_[j - 1];
-            stack_[j] = c;
+            stack_[j] = child(node, i, t0[i]);
         }
         e = stack_[--top_];
         return true;
