@@ -2,6 +2,8 @@
 // which is how "if (object.distance < distance)" of the slides' QueryScene reads with an interval.
 #pragma once
 
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace rt {
@@ -24,5 +26,22 @@ struct BasicInterval {
 };
 
 using Interval = BasicInterval<float>;
+
+// The next float above x: std::nextafter(x, infinity), for every x (NaN and infinity themselves),
+// written out because the library's is a call into libm that no compiler inlines, and a query asks
+// for it at every new best hit (2% of the wide tree's instructions on the pyramid, by callgrind). A
+// float's bits, read as an integer, count its values in order away from zero on either side.
+inline float next_up(float x)
+{
+    if (!(x < infinity))
+        return x;
+    if (x == 0.0f)
+        return std::numeric_limits<float>::denorm_min();  // from -0 too
+    std::uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    bits = x > 0.0f ? bits + 1u : bits - 1u;
+    std::memcpy(&x, &bits, sizeof bits);
+    return x;
+}
 
 }  // namespace rt

@@ -44,7 +44,7 @@ public:
 inline Interval closer_than(Interval range, const ObjectHit& best, int object)
 {
     if (best.object >= 0)
-        range.max = object < best.object ? std::nextafter(best.t, infinity) : best.t;
+        range.max = object < best.object ? next_up(best.t) : best.t;
     return range;
 }
 

@@ -187,7 +187,7 @@ private:
     {
         best_ = h;
         found_ = true;
-        reach_.max = std::nextafter(best_.t, infinity);
+        reach_.max = next_up(best_.t);
         return kind == QueryKind::any ? Walk::answered : Walk::go_on;
     }
 
