@@ -67,6 +67,25 @@ double max3(T a, T b, T c)
     return std::max(a, std::max(b, c));
 }
 
+// The bound from the magnitudes of the test's steps (watertight_t_error, below), for a test in T,
+// combined in N: double for one triangle, and four lanes of float for the wide tree's blocks
+// (chapter 10's lane_bounds.hpp, which scales the result up by its own rounding). Every term is a
+// sum of products of magnitudes, so one formula serves both.
+template <class T, class N>
+N t_error(N max_x, N max_y, N max_z, N max_zt, N max_e, N abs_det)
+{
+    // Each corner minus the origin (1 rounding), the shear's S (1), its product (1) and difference
+    // (1): gamma(5) of the x and z they combine (|S| <= 1, so |S z| <= |z|). The scaled height:
+    // the difference, Sz and the product, gamma(3).
+    const N delta_x = N(gamma<T>(5)) * (max_x + N(2.0) * max_z);
+    const N delta_y = N(gamma<T>(5)) * (max_y + N(2.0) * max_z);
+    const N delta_z = N(gamma<T>(3)) * max_zt;
+    // An edge function x0 y1 - y0 x1: two products and a difference of inputs with those errors.
+    const N delta_e = N(2.0) * (N(gamma<T>(2)) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    // t det = sum(e_i z_i): three products and two sums of errored terms; then divided by det.
+    return N(3.0) * (N(gamma<T>(3)) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / abs_det;
+}
+
 }  // namespace watertight_detail
 
 // The bound on |t - true t| for `ray` meeting `tri`, in the ray's lengths; 0 for a triangle the
@@ -110,17 +129,7 @@ T watertight_t_error(const BasicRay<T>& ray, const BasicTriangle<T>& tri)
     const double max_z = max3(abs(A[kz]), abs(B[kz]), abs(C[kz]));
     const double max_zt = abs(double(Sz)) * max_z;
     const double max_e = max3(abs(U), abs(V), abs(W));
-
-    // Each corner minus the origin (1 rounding), the shear's S (1), its product (1) and difference
-    // (1): gamma(5) of the x and z they combine (|S| <= 1, so |S z| <= |z|). The scaled height:
-    // the difference, Sz and the product, gamma(3).
-    const double delta_x = gamma<T>(5) * (max_x + 2.0 * max_z);
-    const double delta_y = gamma<T>(5) * (max_y + 2.0 * max_z);
-    const double delta_z = gamma<T>(3) * max_zt;
-    // An edge function x0 y1 - y0 x1: two products and a difference of inputs with those errors.
-    const double delta_e = 2.0 * (gamma<T>(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    // t det = sum(e_i z_i): three products and two sums of errored terms; then divided by det.
-    return static_cast<T>(3.0 * (gamma<T>(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / abs(double(det)));
+    return static_cast<T>(watertight_detail::t_error<T>(max_x, max_y, max_z, max_zt, max_e, abs(double(det))));
 }
 
 // Where the float bound cannot decide (a hit nearer than the test's own rounding of t, which grows

@@ -80,6 +80,8 @@ inline unsigned bits(Mask4 m) { return static_cast<unsigned>(_mm_movemask_ps(m.v
 // a > b ? a : b and a < b ? a : b, lane by lane: b where either is NaN (SSE's maxps and minps).
 inline Float4 greater_or_second(Float4 a, Float4 b) { return Float4(_mm_max_ps(a.v, b.v)); }
 inline Float4 less_or_second(Float4 a, Float4 b) { return Float4(_mm_min_ps(a.v, b.v)); }
+// |a|, lane by lane: the sign bit cleared.
+inline Float4 abs(Float4 a) { return Float4(_mm_andnot_ps(_mm_set1_ps(-0.0f), a.v)); }
 #else
 namespace lanes_detail {
 template <class F>
@@ -110,6 +112,7 @@ inline Mask4 operator~(Mask4 a) { return {~a.v & 0xfu}; }
 inline unsigned bits(Mask4 m) { return m.v; }
 inline Float4 greater_or_second(Float4 a, Float4 b) { return lanes_detail::each(a, b, [](float x, float y) { return x > y ? x : y; }); }
 inline Float4 less_or_second(Float4 a, Float4 b) { return lanes_detail::each(a, b, [](float x, float y) { return x < y ? x : y; }); }
+inline Float4 abs(Float4 a) { return lanes_detail::each(a, a, [](float x, float) { return std::fabs(x); }); }
 #endif
 
 }  // namespace lanes_sse or lanes_plain

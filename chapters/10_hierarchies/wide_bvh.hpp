@@ -22,6 +22,7 @@
 
 #include "10_hierarchies/bvh.hpp"
 #include "10_hierarchies/four_triangles.hpp"
+#include "10_hierarchies/lane_bounds.hpp"
 #include "10_hierarchies/lanes.hpp"
 
 #include <algorithm>
@@ -271,8 +272,8 @@ private:
             return false;
         if (!closer_than(range_, best_, k).surrounds(answer.t))
             return false;
-        if (objects_.one_sided && (*objects_.one_sided)[objects_.ref(k).index] && glm::dot(face_normal(tri), ray_.dir) > 0.0f)
-            return false;  // its back
+        if (back_refused(g, i))
+            return false;
         keep(ObjectHit{answer.t, k, answer.beta, answer.gamma});
         return true;
     }
@@ -291,36 +292,85 @@ private:
                     return Walk::answered;
             return Walk::go_on;
         }
+        // Bounded, the lanes hit are told apart by their bound four at once (lane_bounds.hpp)
+        // before any is asked one by one: for an any-hit query always (a lane certainly inside the
+        // range answers it), for a closest-hit query where a lane's float t lies outside the range
+        // (the lanes inside it are asked one by one whatever their bound, for their exact t).
+        const FourBounds bounds = bounded_ && (kind == QueryKind::any ? h.hit != 0 : (h.hit & outside_reach(h)) != 0)
+                                      ? four_t_error_bounds(g, frame_)
+                                      : FourBounds{};
         if (kind == QueryKind::any)
-            return first_lane_kept(g, h, n);
+            return first_lane_kept(g, h, bounds, n);
         count(Counter::intersection_tests, n);
-        nearest_lane_kept(g, h, h.hit & ((1u << n) - 1u));
+        nearest_lane_kept(g, h, bounds, h.hit & ((1u << n) - 1u));
         return Walk::go_on;
+    }
+
+    // The lanes whose float t lies outside the range that could still beat the best hit.
+    unsigned outside_reach(const FourHits& h) const
+    {
+        const Float4 t = Float4::load(h.t);
+        return bits((t < Float4(range_.min)) | (t > Float4(reach_.max)));
+    }
+
+    // Lane i's answer told from its bound, where the bound is known there.
+    static bool known(const FourBounds& bounds, int i) { return lane_in(bounds.known, i); }
+    static LaneAnswer lane_answer(const FourHits& h, const FourBounds& bounds, int i)
+    {
+        return {h.t[i], bounds.upper[i]};
+    }
+
+    // Whether the ray meets lane i's back, where the scene says its triangle has only a front.
+    bool back_refused(const FourTriangles& g, int i) const
+    {
+        const int k = g.object[i];
+        return objects_.one_sided && (*objects_.one_sided)[objects_.ref(k).index] &&
+               glm::dot(face_normal(g.triangle(i)), ray_.dir) > 0.0f;
     }
 
     // An any-hit query's block: the lanes in the leaf's order, counted as the one-by-one loop counts
     // them (the tests up to the hit); answered at the first lane kept.
-    Walk first_lane_kept(const FourTriangles& g, const FourHits& h, std::uint32_t n)
+    // A lane whose bound puts its answer certainly inside the range is hit there whatever that
+    // answer's t, and one whose bound puts it certainly outside is not: neither is asked one by one
+    // (the answer's t is never read: an any-hit query says only whether).
+    Walk first_lane_kept(const FourTriangles& g, const FourHits& h, const FourBounds& bounds, std::uint32_t n)
     {
-        for (std::uint32_t i = 0; i < n; ++i)
-            if (lane_in(h.hit, static_cast<int>(i)) && lane_kept(g, h, static_cast<int>(i))) {
-                count(Counter::intersection_tests, i + 1);
+        for (std::uint32_t j = 0; j < n; ++j) {
+            const int i = static_cast<int>(j);
+            if (!lane_in(h.hit, i))
+                continue;
+            bool kept;
+            if (known(bounds, i) && lane_answer(h, bounds, i).certainly_in(range_))
+                kept = !back_refused(g, i) && keep(ObjectHit{h.t[i], g.object[i], 0.0f, 0.0f}) == Walk::answered;
+            else
+                kept = !(known(bounds, i) && lane_answer(h, bounds, i).refused_by(range_)) && lane_kept(g, h, i);
+            if (kept) {
+                count(Counter::intersection_tests, j + 1);
                 return Walk::answered;
             }
+        }
         count(Counter::intersection_tests, n);
         return Walk::go_on;
     }
 
     // A closest-hit query's block, the lanes hit in `left`.
-    void nearest_lane_kept(const FourTriangles& g, const FourHits& h, unsigned left)
+    void nearest_lane_kept(const FourTriangles& g, const FourHits& h, const FourBounds& bounds, unsigned left)
     {
         if (bounded_) {
             // Every lane asked, as the one-by-one loop asks them (closer_than keeps the nearest
             // whatever the order): a lane whose float t is within the bound is answered by double,
             // nearer or farther than the float t says, so no float order can end the block early.
-            for (int i = 0; i < 4; ++i)
-                if (lane_in(left, i))
+            // But nearest first, so that a lane whose bound puts it certainly beyond the best hit
+            // found meanwhile (or outside the range) is passed over without being asked.
+            while (left != 0) {
+                int i = -1;
+                for (int l = 0; l < 4; ++l)
+                    if (lane_in(left, l) && (i < 0 || h.t[l] < h.t[i]))
+                        i = l;
+                left &= ~(1u << i);
+                if (!(known(bounds, i) && lane_answer(h, bounds, i).refused_by(reach_)))
                     lane_kept(g, h, i);
+            }
             return;
         }
         // Nearest first, by t and then object number (closer_than's order): the first lane kept is

@@ -357,6 +357,113 @@ TEST_CASE("the 4-wide BVH answers as brute force does with the watertight test u
     }
 }
 
+namespace {
+
+// Four triangles about a ray, each within `size` of a point `along` the ray's length ahead (or
+// behind), corners drawn at random: most are hit along the ray's line, some missed; and the ray from
+// a point within `size` of `center`, in a random direction.
+struct LaneCase {
+    Ray ray;
+    Triangle tri[4];
+    FourTriangles g{};
+};
+
+LaneCase lane_case(Rng& rng, float center, float size, float along)
+{
+    const auto u = [&] { return 2.0f * rng.next_float() - 1.0f; };
+    LaneCase c;
+    c.ray = Ray{point3(center + size * u(), center + size * u(), center + size * u()), glm::normalize(vec3(u(), u(), u()) + vec3(0.0f, 0.0f, 0.1f))};
+    for (int i = 0; i < 4; ++i) {
+        const point3 p = c.ray.origin + along * u() * c.ray.dir;
+        const point3 corner[3] = {p + size * vec3(u(), u(), u()), p + size * vec3(u(), u(), u()), p + size * vec3(u(), u(), u())};
+        c.tri[i] = {corner[0], corner[1], corner[2]};
+        for (int k = 0; k < 3; ++k)
+            for (int a = 0; a < 3; ++a)
+                c.g.p[k][a][i] = corner[k][a];
+        c.g.object[i] = i;
+    }
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("four at once, chapter 04's bound on t is at least each triangle's own, at every scale a float holds", "[structures]")
+{
+    // The wide tree passes over a lane by this bound (lane_bounds.hpp): below the one-by-one bound,
+    // it could pass over a lane whose answer, worked out one by one, wins.
+    Rng rng(54, 11);
+    long long asked = 0, known = 0, asked_ordinary = 0, known_ordinary = 0;
+    for (int e = -60; e <= 60; e += 3)
+        for (float spread : {1e-3f, 1.0f, 1e3f})
+            for (int k = 0; k < 60; ++k) {
+                const float scale = std::ldexp(1.0f, e);
+                const LaneCase c = lane_case(rng, scale * (rng.next_float() < 0.5f ? 0.0f : 1e3f), scale, scale * spread);
+                const FourBounds b = four_t_error_bounds(c.g, ray_frame(c.ray));
+                for (int i = 0; i < 4; ++i) {
+                    ++asked;
+                    const bool ordinary = e >= -20 && e <= 20;
+                    asked_ordinary += ordinary;
+                    if (!lane_in(b.known, i))
+                        continue;
+                    ++known;
+                    known_ordinary += ordinary;
+                    const float one = watertight_t_error(c.ray, c.tri[i]);
+                    INFO("scale 2^" << e << ", lane " << i << ": four at once " << b.upper[i] << ", one by one " << one
+                                    << " (" << lanes << ")");
+                    REQUIRE(b.upper[i] >= one);
+                }
+            }
+    INFO(known << " of " << asked << " lanes known; " << known_ordinary << " of " << asked_ordinary
+               << " at scales 2^-20 to 2^20");
+    CHECK(known_ordinary > asked_ordinary * 9 / 10);
+}
+
+TEST_CASE("a lane the bound refuses is refused one by one, and one it puts inside a range is hit there", "[structures]")
+{
+    // LaneAnswer's two decisions against the bounded test's own answer (bounded_answer), for ranges
+    // that end a few bounds either side of the float t: where the plane's t in double or double's
+    // own test moves the answer off the float t, the decisions must still hold.
+    Rng rng(54, 12);
+    long long refused = 0, inside = 0, lanes_hit = 0;
+    const float ends[] = {-10.0f, -3.5f, -3.0f, -2.0f, -1.0f, 0.0f, 1.0f, 2.0f, 3.0f, 3.5f, 10.0f};
+    for (int e = -30; e <= 30; e += 5)
+        for (int k = 0; k < 200; ++k) {
+            const float scale = std::ldexp(1.0f, e);
+            const LaneCase c = lane_case(rng, scale * (rng.next_float() < 0.5f ? 0.0f : 1e4f), scale, scale * (k % 3 == 0 ? 1e-3f : 2.0f));
+            const FourBounds b = four_t_error_bounds(c.g, ray_frame(c.ray));
+            for (int i = 0; i < 4; ++i) {
+                const auto hit = hit_triangle_watertight(c.ray, c.tri[i], Interval{-infinity, infinity});
+                if (!hit || !lane_in(b.known, i))
+                    continue;
+                ++lanes_hit;
+                TriangleHit<float> answer;
+                const bool answered = bounded_answer(c.ray, c.tri[i], *hit, answer);
+                const LaneAnswer lane{hit->t, b.upper[i]};
+                for (float lo : ends)
+                    for (float hi : ends) {
+                        if (!(lo < hi))
+                            continue;
+                        const Interval range{hit->t + lo * b.upper[i], hit->t + hi * b.upper[i]};
+                        const bool in = answered && range.surrounds(answer.t);
+                        INFO("scale 2^" << e << ": float t " << hit->t << ", bound " << b.upper[i] << ", answer "
+                                        << (answered ? answer.t : NAN) << ", range (" << range.min << ", "
+                                        << range.max << ")");
+                        if (lane.refused_by(range)) {
+                            ++refused;
+                            REQUIRE_FALSE(in);
+                        }
+                        if (lane.certainly_in(range)) {
+                            ++inside;
+                            REQUIRE(in);
+                        }
+                    }
+            }
+        }
+    INFO(lanes_hit << " lanes hit; decided: " << refused << " refused, " << inside << " inside");
+    CHECK(refused > lanes_hit);
+    CHECK(inside > lanes_hit / 4);
+}
+
 TEST_CASE("Float4's arithmetic and compares are float's, lane by lane, special values included", "[structures]")
 {
     // 10.6 is 02.5 written with Float4 in place of float: it answers as 02.5 does only if each
@@ -390,6 +497,11 @@ TEST_CASE("Float4's arithmetic and compares are float's, lane by lane, special v
                           << o.one(a[i], b[i]));
                 REQUIRE(same(got[i], o.one(a[i], b[i])));
             }
+        }
+        abs(A).store(got);
+        for (int i = 0; i < 4; ++i) {
+            INFO("|" << a[i] << "| (" << lanes << "): Float4 gives " << got[i]);
+            REQUIRE(same(got[i], std::fabs(a[i])));
         }
         const unsigned lt = bits(A < B), gt = bits(A > B), eq = bits(A == B), ne = bits(A != B);
         const unsigned mixed = bits(~(A < B) & ((A == B) | (A != B)));
