@@ -203,16 +203,26 @@ inline double plane_t(const Ray& ray, const Triangle& tri)
 // never on a range: a query applies its range to the answer, not to the float t, or two copies of
 // one triangle asked in two ranges (the tie rule, closer_than) could answer differently, the float
 // t outside the nearer range and double's t inside it.
+// Its answer for a hit beyond the bound: the hit, its t taken again on the plane where the bound is
+// coarse beside it (`coarse`: bound > coarse_t * hit.t). A step of its own so that a caller that
+// tells both conditions apart another way (chapter 10's wide tree, four lanes at once) asks
+// nothing more of the triangle.
+inline void answer_beyond_bound(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, bool coarse,
+                                TriangleHit<float>& out)
+{
+    out = hit;
+    if (coarse) {
+        const double t = plane_t(ray, tri);
+        if (t > 0.0 && t < std::numeric_limits<double>::infinity())
+            out.t = static_cast<float>(t);
+    }
+}
+
 inline bool bounded_answer(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, TriangleHit<float>& out)
 {
     const float bound = watertight_t_error(ray, tri);
     if (hit.t > bound) {
-        out = hit;
-        if (bound > coarse_t * hit.t) {
-            const double t = plane_t(ray, tri);
-            if (t > 0.0 && t < std::numeric_limits<double>::infinity())
-                out.t = static_cast<float>(t);
-        }
+        answer_beyond_bound(ray, tri, hit, bound > coarse_t * hit.t, out);
         return true;
     }
     if (hit.t < -bound)

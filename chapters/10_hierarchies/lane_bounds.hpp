@@ -13,10 +13,11 @@
 
 namespace rt {
 
-// Each lane's bound on |t - true t|, at least the one-by-one test's (upper), and the lanes where
-// that holds (known): elsewhere the bound says nothing and the lane is asked one by one.
+// Each lane's bound on |t - true t|, at least the one-by-one test's (upper) and at most it (lower),
+// and the lanes where that holds (known): elsewhere the bound says nothing and the lane is asked
+// one by one.
 struct FourBounds {
-    float upper[4];
+    float upper[4], lower[4];
     unsigned known = 0;
 };
 
@@ -32,8 +33,8 @@ inline Float4 min4(Float4 a, Float4 b, Float4 c, Float4 d) { return less_or_seco
 // may name x and y the other way round (ray_frame keeps the winding), which the bound does not see
 // (an edge function changes sign, exactly). Only their combination differs: float here, double
 // there. Its terms are all sums of products of magnitudes, 14 roundings of 2^-24 at most, so the
-// float result times 1 + 2^-16 is at least double's (cast to float, one rounding more) wherever no
-// step underflows or overflows. The lanes kept to known have the sheared magnitudes and heights
+// float result times 1 + 2^-16 is at least double's (cast to float, one rounding more), and times
+// 1 - 2^-16 at most it, wherever no step underflows or overflows. The lanes kept to known have the sheared magnitudes and heights
 // above 2^-30 and the edge functions and det above 2^-60: the smallest product then stays above
 // 2^-112 (float's least normal is 2^-126), and as |det| <= 3 max_e the bound itself stays above
 // 2^-54. A lane whose edge function is 0 (the test retakes those in double) is not known.
@@ -63,6 +64,7 @@ inline FourBounds four_t_error_bounds(const FourTriangles& g, const RayFrame& f)
 
     FourBounds b;
     (bound * Float4(1.0f + 0x1p-16f)).store(b.upper);
+    (bound * Float4(1.0f - 0x1p-16f)).store(b.lower);
     // Lower limits keep every product normal; an overflow gives infinity, a bound that decides
     // nothing, except in det, which divides: max_e below 2^60 keeps det finite. NaN fails them all.
     const Mask4 known = (min4(max_x, max_y, max_z, max_zt) > Float4(0x1p-30f)) &
@@ -78,7 +80,7 @@ inline FourBounds four_t_error_bounds(const FourTriangles& g, const RayFrame& f)
 // and that of the sums below are each far below one bound), a lane whose interval lies outside a
 // range is refused by it, and one whose interval lies inside it, beyond the bound, is hit in it.
 struct LaneAnswer {
-    float t, bound;
+    float t, bound, lower;
     bool refused_by(Interval range) const
     {
         return t < -bound || t - 3.0f * bound >= range.max || t + 3.0f * bound <= range.min;
@@ -87,6 +89,12 @@ struct LaneAnswer {
     {
         return t > bound && t - 3.0f * bound > range.min && t + 3.0f * bound < range.max;
     }
+    // Where t lies beyond the bound, bounded_answer answers with answer_beyond_bound, its t taken
+    // again on the plane where the bound exceeds coarse_t of t: whether it does is certain when
+    // both bounds lie on one side of coarse_t t (the same float product bounded_answer compares).
+    bool beyond() const { return t > bound; }
+    bool coarse() const { return lower > coarse_t * t; }
+    bool fine() const { return bound <= coarse_t * t; }
 };
 
 }  // namespace rt

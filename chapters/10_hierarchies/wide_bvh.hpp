@@ -263,13 +263,19 @@ private:
     // What the one-by-one loop asks an object, for a lane the block's test hit: the bound on t
     // (bounded_answer, before the range, as hit_triangle_bounded applies it), the tie rule, its
     // front; true when the hit is kept.
-    bool lane_kept(const FourTriangles& g, const FourHits& h, int i)
+    bool lane_kept(const FourTriangles& g, const FourHits& h, const FourBounds& bounds, int i)
     {
         const int k = g.object[i];
         const Triangle tri = g.triangle(i);
         TriangleHit<float> answer{h.t[i], h.V[i] / h.det[i], h.W[i] / h.det[i]};
-        if (bounded_ && !bounded_answer(ray_, tri, answer, answer))
-            return false;
+        if (bounded_) {
+            // bounded_answer's steps where the four-lane bound already decides them, else itself.
+            const LaneAnswer lane = lane_answer(h, bounds, i);
+            if (known(bounds, i) && lane.beyond() && (lane.coarse() || lane.fine()))
+                answer_beyond_bound(ray_, tri, answer, lane.coarse(), answer);
+            else if (!bounded_answer(ray_, tri, answer, answer))
+                return false;
+        }
         if (!closer_than(range_, best_, k).surrounds(answer.t))
             return false;
         if (back_refused(g, i))
@@ -292,13 +298,9 @@ private:
                     return Walk::answered;
             return Walk::go_on;
         }
-        // Bounded, the lanes hit are told apart by their bound four at once (lane_bounds.hpp)
-        // before any is asked one by one: for an any-hit query always (a lane certainly inside the
-        // range answers it), for a closest-hit query where a lane's float t lies outside the range
-        // (the lanes inside it are asked one by one whatever their bound, for their exact t).
-        const FourBounds bounds = bounded_ && (kind == QueryKind::any ? h.hit != 0 : (h.hit & outside_reach(h)) != 0)
-                                      ? four_t_error_bounds(g, frame_)
-                                      : FourBounds{};
+        // Bounded, the lanes hit are told apart by their bound, four at once (lane_bounds.hpp),
+        // before any is asked one by one: most then need only the plane's t, or nothing.
+        const FourBounds bounds = bounded_ && h.hit != 0 ? four_t_error_bounds(g, frame_) : FourBounds{};
         if (kind == QueryKind::any)
             return first_lane_kept(g, h, bounds, n);
         count(Counter::intersection_tests, n);
@@ -306,18 +308,11 @@ private:
         return Walk::go_on;
     }
 
-    // The lanes whose float t lies outside the range that could still beat the best hit.
-    unsigned outside_reach(const FourHits& h) const
-    {
-        const Float4 t = Float4::load(h.t);
-        return bits((t < Float4(range_.min)) | (t > Float4(reach_.max)));
-    }
-
     // Lane i's answer told from its bound, where the bound is known there.
     static bool known(const FourBounds& bounds, int i) { return lane_in(bounds.known, i); }
     static LaneAnswer lane_answer(const FourHits& h, const FourBounds& bounds, int i)
     {
-        return {h.t[i], bounds.upper[i]};
+        return {h.t[i], bounds.upper[i], bounds.lower[i]};
     }
 
     // Whether the ray meets lane i's back, where the scene says its triangle has only a front.
@@ -343,7 +338,7 @@ private:
             if (known(bounds, i) && lane_answer(h, bounds, i).certainly_in(range_))
                 kept = !back_refused(g, i) && keep(ObjectHit{h.t[i], g.object[i], 0.0f, 0.0f}) == Walk::answered;
             else
-                kept = !(known(bounds, i) && lane_answer(h, bounds, i).refused_by(range_)) && lane_kept(g, h, i);
+                kept = !(known(bounds, i) && lane_answer(h, bounds, i).refused_by(range_)) && lane_kept(g, h, bounds, i);
             if (kept) {
                 count(Counter::intersection_tests, j + 1);
                 return Walk::answered;
@@ -369,7 +364,7 @@ private:
                         i = l;
                 left &= ~(1u << i);
                 if (!(known(bounds, i) && lane_answer(h, bounds, i).refused_by(reach_)))
-                    lane_kept(g, h, i);
+                    lane_kept(g, h, bounds, i);
             }
             return;
         }
@@ -382,7 +377,7 @@ private:
             for (int l = 0; l < 4; ++l)
                 if (lane_in(left, l) && (i < 0 || h.t[l] < h.t[i] || (h.t[l] == h.t[i] && g.object[l] < g.object[i])))
                     i = l;
-            if (lane_kept(g, h, i))
+            if (lane_kept(g, h, bounds, i))
                 return;
             left &= ~(1u << i);
         }

@@ -418,13 +418,14 @@ TEST_CASE("four at once, chapter 04's bound on t is at least each triangle's own
     CHECK(known_ordinary > asked_ordinary * 9 / 10);
 }
 
-TEST_CASE("a lane the bound refuses is refused one by one, and one it puts inside a range is hit there", "[structures]")
+TEST_CASE("a lane the bound refuses is refused one by one, one it puts inside a range is hit there, and one it answers gets bounded_answer's t", "[structures]")
 {
-    // LaneAnswer's two decisions against the bounded test's own answer (bounded_answer), for ranges
+    // LaneAnswer's decisions against the bounded test's own answer (bounded_answer), for ranges
     // that end a few bounds either side of the float t: where the plane's t in double or double's
-    // own test moves the answer off the float t, the decisions must still hold.
+    // own test moves the answer off the float t, the decisions must still hold. And where the
+    // four-lane bounds decide bounded_answer's own steps, the wide tree's answer is its, bit for bit.
     Rng rng(54, 12);
-    long long refused = 0, inside = 0, lanes_hit = 0;
+    long long refused = 0, inside = 0, lanes_hit = 0, answered_by_lanes = 0;
     const float ends[] = {-10.0f, -3.5f, -3.0f, -2.0f, -1.0f, 0.0f, 1.0f, 2.0f, 3.0f, 3.5f, 10.0f};
     for (int e = -30; e <= 30; e += 5)
         for (int k = 0; k < 200; ++k) {
@@ -438,7 +439,17 @@ TEST_CASE("a lane the bound refuses is refused one by one, and one it puts insid
                 ++lanes_hit;
                 TriangleHit<float> answer;
                 const bool answered = bounded_answer(c.ray, c.tri[i], *hit, answer);
-                const LaneAnswer lane{hit->t, b.upper[i]};
+                const LaneAnswer lane{hit->t, b.upper[i], b.lower[i]};
+                if (lane.beyond() && (lane.coarse() || lane.fine())) {
+                    ++answered_by_lanes;
+                    TriangleHit<float> by_lanes;
+                    answer_beyond_bound(c.ray, c.tri[i], *hit, lane.coarse(), by_lanes);
+                    INFO("scale 2^" << e << ": float t " << hit->t << ", bounds " << b.lower[i] << " to " << b.upper[i]
+                                    << ": four lanes answer t " << by_lanes.t << ", bounded_answer "
+                                    << (answered ? answer.t : NAN));
+                    REQUIRE(answered);
+                    REQUIRE(std::memcmp(&by_lanes, &answer, sizeof answer) == 0);
+                }
                 for (float lo : ends)
                     for (float hi : ends) {
                         if (!(lo < hi))
@@ -459,9 +470,11 @@ TEST_CASE("a lane the bound refuses is refused one by one, and one it puts insid
                     }
             }
         }
-    INFO(lanes_hit << " lanes hit; decided: " << refused << " refused, " << inside << " inside");
+    INFO(lanes_hit << " lanes hit; decided: " << refused << " refused, " << inside << " inside; "
+                   << answered_by_lanes << " answered from the four-lane bounds");
     CHECK(refused > lanes_hit);
     CHECK(inside > lanes_hit / 4);
+    CHECK(answered_by_lanes > lanes_hit / 3);
 }
 
 TEST_CASE("Float4's arithmetic and compares are float's, lane by lane, special values included", "[structures]")
