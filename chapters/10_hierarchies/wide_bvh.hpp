@@ -211,7 +211,8 @@ private:
     }
 
     // A node: its children that the ray enters within reach. The nearest becomes `e`, the others are
-    // pushed far to near; false when the ray enters none.
+    // pushed far to near; false when the ray enters none. An any-hit query pushes them as they come:
+    // any hit answers it, the nearest no sooner than another (as Embree's occlusion rays walk).
     bool open(const WideNode& node, Entry& e)
     {
         count(Counter::nodes_visited);
@@ -240,8 +241,9 @@ private:
             // 12% of the closest-hit walk on the pyramid by perf; chapters/benchmark/README.md,
             // "Chapter 10's steps", step 9).
             int j = top_++;
-            for (; j > base && stack_[j - 1].t < t0[i]; --j)
-                stack_[j] = stack_[j - 1];
+            if (kind == QueryKind::closest)
+                for (; j > base && stack_[j - 1].t < t0[i]; --j)
+                    stack_[j] = stack_[j - 1];
             stack_[j] = child(node, i, t0[i]);
         }
         e = stack_[--top_];
