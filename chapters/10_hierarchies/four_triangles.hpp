@@ -39,12 +39,17 @@ inline RayFrame ray_frame(const Ray& ray)
 }
 
 // Four triangles of a leaf, corner by corner and axis by axis: p[c][a][i] is coordinate a of corner c
-// (a, b, c) of the triangle in lane i. 164 bytes for four, copied from the scene at the build; a
+// (a, b, c) of the triangle in lane i. 172 bytes for four, copied from the scene at the build; a
 // block of fewer than four leaves its other lanes at 0, out of with_area.
 struct FourTriangles {
     float p[3][3][4];
     std::int32_t object[4];   // each lane's object number
     std::uint32_t with_area;  // bit i: lane i holds a triangle with area (02.5 never hits one without)
+    // Where every corner of the block's triangles lies on one plane of an axis (a floor, a wall):
+    // that axis (-1: none) and the plane's coordinate. The wide tree then passes the block over for
+    // a bounded query whose ray leaves that plane (wide_bvh.hpp, WideQuery::leaves_plane).
+    std::int32_t flat_axis = -1;
+    float flat_at = 0.0f;
 
     // Lane i's triangle, the scene's own floats: what the wide tree asks of a lane hit (chapter 04's
     // bound on t, which face the ray meets) without reading the scene's arrays again.
@@ -88,6 +93,16 @@ inline FourTriangles four_triangles(const Objects& objects, const std::uint32_t*
         const vec3 normal = glm::cross(tri.b - tri.a, tri.c - tri.a);
         if (!(normal.x == 0 && normal.y == 0 && normal.z == 0))
             g.with_area |= 1u << i;
+    }
+    for (int a = 0; a < 3 && g.flat_axis < 0; ++a) {
+        bool flat = true;
+        for (std::uint32_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c)
+                flat = flat && g.p[c][a][i] == g.p[0][a][0];
+        if (flat) {
+            g.flat_axis = a;
+            g.flat_at = g.p[0][a][0];
+        }
     }
     return g;
 }

@@ -290,6 +290,8 @@ private:
     // for the watertight test, else (or with 10.6's stub) one by one.
     Walk block(const FourTriangles& g, std::uint32_t n)
     {
+        if (bounded_ && leaves_plane(g))
+            return Walk::go_on;
         // Bounded, every lane hit along the whole line, as hit_triangle_bounded asks: a lane's
         // answer may lie in the range when its float t does not (bounded_answer).
         const Interval asked = bounded_ ? Interval{-infinity, infinity} : Interval{range_.min, reach_.max};
@@ -308,6 +310,23 @@ private:
         count(Counter::intersection_tests, n);
         nearest_lane_kept(g, h, bounds, h.hit & ((1u << n) - 1u));
         return Walk::go_on;
+    }
+
+    // Whether the ray starts off the plane every triangle of the block lies on, and moves away from
+    // it: a ray leaving a floor, a wall. Then the bounded test answers no lane: each triangle's true t
+    // is below 0, so a float t beyond its bound cannot be (the bound is on |t - true t|), and within
+    // it double's own test, which places a hit in front only beyond double's bound, refuses it too.
+    // (Without the bound, a float t rounded above range.min could be a hit: not passed over.) Why:
+    // a ray leaving a surface starts within that surface's margin (chapter 07: 2^-20 of the reach's
+    // width, wider than chapter 04's offset of the origin), so the walk entered the floor's leaf
+    // from every ray that left the floor, and tested it, the floor's own triangle in double:
+    // chapters/benchmark/README.md, "Chapter 10's steps", step 14.
+    bool leaves_plane(const FourTriangles& g) const
+    {
+        if (g.flat_axis < 0)
+            return false;
+        const float o = ray_.origin[g.flat_axis], d = ray_.dir[g.flat_axis];
+        return (o > g.flat_at && d > 0.0f) || (o < g.flat_at && d < 0.0f);
     }
 
     // Lane i's answer told from its bound, where the bound is known there.

@@ -244,6 +244,60 @@ TEST_CASE("the 4-wide BVH tests no more objects than the binary tree it was made
     CHECK(by_wide <= by_binary + by_binary / 4);
 }
 
+TEST_CASE("rays leaving a floor answer as brute force does through the 4-wide BVH, which passes the floor's block over", "[structures]")
+{
+    // The pyramid stands on a floor at y = 0. Rays leave the pyramid's faces and the floor from
+    // chapter 04's robust origin, into either side, and from points on the floor's plane, just above
+    // and just below it; every answer must be brute force's, and a ray leaving the floor must test
+    // fewer triangles than the floor's block holds on top of the rest (WideQuery::leaves_plane).
+    const LitScene scene = lit_scene(generated_scene(write_pyramid, 2, "pyramid 2"));
+    const Objects objects = objects_of(scene, lit_tests);
+    const WideBvhAccel wide(objects);
+    int flat_blocks = 0;
+    for (const FourTriangles& g : wide.tree().blocks)
+        flat_blocks += g.flat_axis == 1 && g.flat_at == 0.0f;
+    INFO("blocks on the floor's plane: " << flat_blocks << " (" << lanes << ")");
+    REQUIRE(flat_blocks > 0);
+    Rng rng(54, 14);
+    const auto u = [&] { return 2.0f * rng.next_float() - 1.0f; };
+    int rays = 0, wrong = 0, leaving_floor = 0;
+    std::uint64_t floor_tests = 0;
+    for (int k = 0; k < 3000; ++k) {
+        // A point on a surface: a brute-force hit of a ray from above, or a point of the floor.
+        const Ray down{point3(3.0f * u(), 2.0f, 3.0f * u()), glm::normalize(vec3(0.3f * u(), -1.0f, 0.3f * u()))};
+        ObjectHit h;
+        if (!brute_force().closest(down, {0.0f, infinity}, objects, h))
+            continue;
+        const point3 p = down.origin + h.t * down.dir;
+        const vec3 n = glm::normalize(face_normal(objects.triangles[objects.ref(h.object).index]));
+        const vec3 d = glm::normalize(vec3(u(), u(), u()));
+        point3 origins[4] = {offset_ray_origin(p, n, d), point3(p.x, 0.0f, p.z), point3(p.x, 1e-7f, p.z), point3(p.x, -1e-7f, p.z)};
+        for (const point3& o : origins) {
+            const Ray ray{o, d};
+            ObjectHit want, got;
+            reset_counters();
+            const bool got_found = wide.closest(ray, {0.0f, infinity}, objects, got);
+            const std::uint64_t tests = total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+            const bool want_found = brute_force().closest(ray, {0.0f, infinity}, objects, want);
+            const bool same = want_found == got_found && (!want_found || (want.object == got.object && want.t == got.t)) &&
+                              brute_force().any(ray, {0.0f, infinity}, objects) == wide.any(ray, {0.0f, infinity}, objects);
+            ++rays;
+            if (!same && wrong++ == 0)
+                FAIL_CHECK(show(ray) << ": brute force " << agreement::answer(want_found, want) << ", the wide tree "
+                                     << agreement::answer(got_found, got) << " (" << lanes << ")");
+            if (o.y > 0.0f && d.y > 0.0f && std::abs(o.y) < 1e-3f) {
+                ++leaving_floor;
+                floor_tests += tests;
+            }
+        }
+    }
+    INFO(rays << " rays, " << wrong << " answered differently; " << leaving_floor << " rays leaving the floor tested "
+              << floor_tests << " triangles (" << lanes << ")");
+    CHECK(wrong == 0);
+    REQUIRE(leaving_floor > 100);
+    CHECK(floor_tests < 2u * static_cast<std::uint64_t>(leaving_floor));
+}
+
 #if RT_WIDE_SSE
 TEST_CASE("with tiny floats flushed to 0, the 4-wide BVH still enters no empty slot", "[structures]")
 {
