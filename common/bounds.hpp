@@ -64,8 +64,8 @@ inline Bounds widened_one_ulp(const Bounds& b)
 {
     Bounds w;
     for (int i = 0; i < 3; ++i) {
-        w.min[i] = std::nextafter(b.min[i], -infinity);
-        w.max[i] = std::nextafter(b.max[i], infinity);
+        w.min[i] = next_down(b.min[i]);
+        w.max[i] = next_up(b.max[i]);
     }
     return w;
 }

@@ -44,4 +44,7 @@ inline float next_up(float x)
     return x;
 }
 
+// The next float below x: std::nextafter(x, -infinity), by the symmetry of floats about 0.
+inline float next_down(float x) { return -next_up(-x); }
+
 }  // namespace rt
