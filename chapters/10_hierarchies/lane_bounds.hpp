@@ -1,7 +1,7 @@
 // Chapter 04's bound on the watertight test's t (watertight_t_error, chapter 02's shape_tests.hpp),
 // four lanes of a block at once (given). Why: the bounded test asks each hit for that bound, then
 // for the plane's t in double, and asked lane by lane the bound alone took 11% of the wide tree's
-// time on the pyramid (perf; chapters/benchmark/README.md, "Chapter 10's steps", step 10), mostly
+// time on the pyramid (perf; chapters/benchmark/README.md, "Chapter 10's steps", step 12), mostly
 // for lanes whose answer could not matter: behind the origin, beyond the best hit so far, or, for a
 // shadow feeler, certainly inside its range. Four at once, in float, the bound tells those lanes apart;
 // the others are asked one by one, exactly as before, so every answer stays the one-by-one loop's.

@@ -239,7 +239,7 @@ private:
             // was stored in four narrow pieces and read back as one 8-byte word, which the
             // processor cannot forward from its store buffer (a stall of a dozen cycles a push,
             // 12% of the closest-hit walk on the pyramid by perf; chapters/benchmark/README.md,
-            // "Chapter 10's steps", step 9).
+            // "Chapter 10's steps", step 10).
             int j = top_++;
             if (kind == QueryKind::closest)
                 for (; j > base && stack_[j - 1].t < t0[i]; --j)
@@ -320,7 +320,7 @@ private:
     // a ray leaving a surface starts within that surface's margin (chapter 07: 2^-20 of the reach's
     // width, wider than chapter 04's offset of the origin), so the walk entered the floor's leaf
     // from every ray that left the floor, and tested it, the floor's own triangle in double:
-    // chapters/benchmark/README.md, "Chapter 10's steps", step 14.
+    // chapters/benchmark/README.md, "Chapter 10's steps", step 15.
     bool leaves_plane(const FourTriangles& g) const
     {
         if (g.flat_axis < 0)
