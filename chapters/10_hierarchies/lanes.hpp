@@ -12,6 +12,8 @@
 // processor, not 32-bit x86's x87, which the kit does not support.
 #pragma once
 
+#include <cmath>
+
 #if !defined(RT_WIDE_SCALAR) && (defined(__SSE2__) || defined(_M_X64)) && !defined(_M_ARM64EC)
 #define RT_WIDE_SSE 1
 #include <emmintrin.h>
