@@ -167,14 +167,6 @@ inline bool hit_triangle_decided_in_double(const Ray& ray, const Triangle& tri, 
     return true;
 }
 
-// The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
-// its origin too: its own t where that lies beyond the bound and the bound is small beside it;
-// nothing where it lies more than the bound behind; otherwise, double's decision. A float t of -0 or a little below can belong to a
-// surface certainly in front (a floor 1e9 across seen from 1e-3 above: its t rounds by more than
-// the eye's height), so the band is asked around 0 on both sides. The answer depends on the ray and
-// the triangle alone, never on a range: a query applies its range to the answer, not to the float
-// t, or two copies of one triangle asked in two ranges (the tie rule, closer_than) could answer
-// differently, the float t outside the nearer range and double's t inside it.
 // Where the bound on a float t exceeds coarse_t of the t itself, the hit stands (the float test's
 // watertight decision is kept: asking double whether a ray through a shared vertex hits would
 // decide one neighbour in double and the other in float, and let the ray slip between them), but
@@ -194,19 +186,10 @@ inline double plane_t(const Ray& ray, const Triangle& tri)
     return glm::dot(n, a - o) / glm::dot(n, d);
 }
 
-// The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
-// its origin too: its own t where that lies beyond the bound (the plane's t in double where the
-// bound is coarse beside it); nothing where it lies more than the bound behind; in between,
-// double's decision. A float t of -0 or a little below can belong to a surface certainly in front
-// (a floor 1e9 across seen from 1e-3 above: its t rounds by more than the eye's height), so the
-// band is asked around 0 on both sides. The answer depends on the ray and the triangle alone,
-// never on a range: a query applies its range to the answer, not to the float t, or two copies of
-// one triangle asked in two ranges (the tie rule, closer_than) could answer differently, the float
-// t outside the nearer range and double's t inside it.
-// Its answer for a hit beyond the bound: the hit, its t taken again on the plane where the bound is
-// coarse beside it (`coarse`: bound > coarse_t * hit.t). A step of its own so that a caller that
-// tells both conditions apart another way (chapter 10's wide tree, four lanes at once) asks
-// nothing more of the triangle.
+// bounded_answer's answer (below) for a hit beyond the bound: the hit, its t taken again on the
+// plane where the bound is coarse beside it (`coarse`: bound > coarse_t * hit.t). A step of its own
+// so that a caller that tells both conditions apart another way (chapter 10's wide tree, four lanes
+// at once) asks nothing more of the triangle.
 inline void answer_beyond_bound(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, bool coarse,
                                 TriangleHit<float>& out)
 {
@@ -218,6 +201,15 @@ inline void answer_beyond_bound(const Ray& ray, const Triangle& tri, const Trian
     }
 }
 
+// The bounded test's answer for a hit the float test found anywhere along the ray's line, behind
+// its origin too: its own t where that lies beyond the bound (the plane's t in double where the
+// bound is coarse beside it); nothing where it lies more than the bound behind; in between,
+// double's decision. A float t of -0 or a little below can belong to a surface certainly in front
+// (a floor 1e9 across seen from 1e-3 above: its t rounds by more than the eye's height), so the
+// band is asked around 0 on both sides. The answer depends on the ray and the triangle alone,
+// never on a range: a query applies its range to the answer, not to the float t, or two copies of
+// one triangle asked in two ranges (the tie rule, closer_than) could answer differently, the float
+// t outside the nearer range and double's t inside it.
 inline bool bounded_answer(const Ray& ray, const Triangle& tri, const TriangleHit<float>& hit, TriangleHit<float>& out)
 {
     const float bound = watertight_t_error(ray, tri);

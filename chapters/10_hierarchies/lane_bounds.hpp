@@ -75,10 +75,12 @@ inline FourBounds four_t_error_bounds(const FourTriangles& g, const RayFrame& f)
 
 // What the bounded test's answer for a lane can be, told from its float t and its bound alone
 // (chapter 02's bounded_answer): nothing where t lies more than the bound behind the origin;
-// otherwise a t within the bound of the float t (the float t itself, the plane's t in double, or
-// double's own test), rounded to float. So with three bounds of room (the answer's own rounding
-// and that of the sums below are each far below one bound), a lane whose interval lies outside a
-// range is refused by it, and one whose interval lies inside it, beyond the bound, is hit in it.
+// otherwise the float t itself, or a t within the bound of it (the plane's t in double, or double's
+// own test) rounded to float. Those others come only where the bound is over 2^-20 of t (coarse_t)
+// or t lies within it, so their rounding, and that of the sums below, is far below one bound; the
+// float t itself needs no room, as t - 3 bound rounds to at most t. So with three bounds of room a
+// lane whose interval lies outside a range is refused by it, and one whose interval lies inside it,
+// beyond the bound, is hit in it.
 struct LaneAnswer {
     float t, bound, lower;
     bool refused_by(Interval range) const

@@ -345,21 +345,23 @@ private:
     }
 
     // An any-hit query's block: the lanes in the leaf's order, counted as the one-by-one loop counts
-    // them (the tests up to the hit); answered at the first lane kept.
-    // A lane whose bound puts its answer certainly inside the range is hit there whatever that
-    // answer's t, and one whose bound puts it certainly outside is not: neither is asked one by one
-    // (the answer's t is never read: an any-hit query says only whether).
+    // them (the tests up to the hit); answered at the first lane kept. A lane whose bound puts its
+    // answer certainly inside the range is hit there whatever that answer's t, and one whose bound
+    // puts it certainly outside is not: neither is asked one by one (an any-hit query says only
+    // whether, never where).
     Walk first_lane_kept(const FourTriangles& g, const FourHits& h, const FourBounds& bounds, std::uint32_t n)
     {
         for (std::uint32_t j = 0; j < n; ++j) {
             const int i = static_cast<int>(j);
             if (!lane_in(h.hit, i))
                 continue;
+            const LaneAnswer lane = lane_answer(h, bounds, i);
+            const bool decided = known(bounds, i);
             bool kept;
-            if (known(bounds, i) && lane_answer(h, bounds, i).certainly_in(range_))
+            if (decided && lane.certainly_in(range_))
                 kept = !back_refused(g, i) && keep(ObjectHit{h.t[i], g.object[i], 0.0f, 0.0f}) == Walk::answered;
             else
-                kept = !(known(bounds, i) && lane_answer(h, bounds, i).refused_by(range_)) && lane_kept(g, h, bounds, i);
+                kept = !(decided && lane.refused_by(range_)) && lane_kept(g, h, bounds, i);
             if (kept) {
                 count(Counter::intersection_tests, j + 1);
                 return Walk::answered;
