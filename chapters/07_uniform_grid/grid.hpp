@@ -249,19 +249,26 @@ inline Bounds reach_around(const Bounds& b)
     return grown(b, reach_widths * std::max({e.x, e.y, e.z}));
 }
 
-// The margins of `objects`' structures: the reach around their bulk, the wide box around them all.
-inline Margins margins_of(const Objects& objects)
+// The margins of the structures over objects whose boxes are `boxes` (objects.bounds(k), as they
+// are, not grown): the reach around their bulk, the wide box around them all.
+inline Margins margins_of(const std::vector<Bounds>& boxes)
 {
-    std::vector<Bounds> boxes(static_cast<std::size_t>(objects.size()));
     Bounds all;
-    for (int k = 0; k < objects.size(); ++k) {
-        boxes[static_cast<std::size_t>(k)] = objects.bounds(k);
-        all.grow(boxes[static_cast<std::size_t>(k)]);
-    }
+    for (const Bounds& b : boxes)
+        all.grow(b);
     const Bounds bulk = bulk_of(boxes);
     if (bulk.empty())
         return {Bounds{point3(0.0f), point3(0.0f)}, Bounds{point3(0.0f), point3(0.0f)}};
     return {reach_around(bulk), reach_around(all)};
+}
+
+// The margins of `objects`' structures.
+inline Margins margins_of(const Objects& objects)
+{
+    std::vector<Bounds> boxes(static_cast<std::size_t>(objects.size()));
+    for (int k = 0; k < objects.size(); ++k)
+        boxes[static_cast<std::size_t>(k)] = objects.bounds(k);
+    return margins_of(boxes);
 }
 
 // The seam every structure of chapters 07-10 answers through: a ray its margins cover (Margins::covers)

@@ -10,6 +10,7 @@
 
 #include "07_uniform_grid/grid.hpp"
 #include "10_hierarchies/10_hierarchies.hpp"
+#include "10_hierarchies/lanes.hpp"
 #include "common/error.hpp"
 #include "common/stats.hpp"
 
@@ -184,11 +185,18 @@ private:
         // the ray's origin); brute force reports such a hit, and the BVH must find it too. The
         // margin follows the rounding of the object's coordinates and of the rays' origins within the
         // margins' reach, so a small object near the origin keeps a small box beside a far one.
-        margins_ = margins_of(objects);
+        for (int k = 0; k < n; ++k)
+            boxes_[k] = objects.bounds(k);
+        margins_ = margins_of(boxes_);
         for (int k = 0; k < n; ++k) {
-            const Bounds box = objects.bounds(k);
-            boxes_[k] = grown(box, margins_.of(box));
+            boxes_[k] = grown(boxes_[k], margins_.of(boxes_[k]));
             centres_[k] = boxes_[k].centre();
+        }
+        if (settings_.split == BvhSplit::sah) {
+            lane_boxes_.resize(static_cast<std::size_t>(n));
+            for (int i = 0; i < n; ++i)
+                lane_boxes_[i] = lane_box(boxes_[i]);
+            lane_bins_.resize(3 * static_cast<std::size_t>(settings_.bins));
         }
         if (settings_.split == BvhSplit::open) {
             // Your own build (10.7): held to its rules before any ray walks it.
@@ -206,6 +214,8 @@ private:
         stats_.build_seconds = timer.seconds();
         boxes_ = {};
         centres_ = {};
+        lane_boxes_ = {};
+        lane_bins_ = {};
     }
 
     // A run of object_index, object_index[begin, end), with the box around its objects' boxes and
@@ -289,23 +299,36 @@ private:
         float scale[3];
         bool along[3];  // the axes the centres spread along, by a finite positive scale (not 0, NaN
                         // or infinite: a spread of 0, infinity, NaN or too small to divide by)
+        LaneBin* axis_bins[3];  // bins 0 .. bins - 1 along each axis
         for (int a = 0; a < 3; ++a) {
             scale[a] = static_cast<float>(bins) / spread[a];
             along[a] = scale[a] > 0.0f && scale[a] < infinity;
-            bins_[a].assign(static_cast<std::size_t>(bins), SahBin{});
+            axis_bins[a] = &lane_bins_[static_cast<std::size_t>(a * bins)];
+            std::fill(axis_bins[a], axis_bins[a] + bins, LaneBin{});
         }
-        const auto bin_of = [&](std::uint32_t k, int a) {
-            return std::min(bins - 1, static_cast<int>((glm::value_ptr(centres_[k])[a] - low[a]) * scale[a]));
+        // An object's bin along each axis at once: its centre's distance from the lowest times
+        // bins / spread, in lanes; the lesser of that and bins - 1 taken before the conversion to int
+        // (the same as after, for a distance of 0 or more, as every centre's is).
+        const Float4 low4(low[0], low[1], low[2], 0.0f), scale4(scale[0], scale[1], scale[2], 0.0f);
+        const Float4 last_bin = static_cast<float>(bins - 1);
+        const auto bins_of = [&](const LaneBox& box, float bin[4]) {
+            less_or_second((box.centre() - low4) * scale4, last_bin).store(bin);
         };
         for (int i = g.begin; i < g.end; ++i) {
-            const std::uint32_t k = bvh_.object_index[i];
+            const LaneBox& box = lane_boxes_[bvh_.object_index[i]];
+            float bin[4];
+            bins_of(box, bin);
             for (int a = 0; a < 3; ++a)
-                if (along[a]) {
-                    SahBin& bin = bins_[a][bin_of(k, a)];
-                    ++bin.count;
-                    bin.bounds.grow(boxes_[k]);
-                }
+                if (along[a])
+                    axis_bins[a][static_cast<int>(bin[a])].grow(box);
         }
+        // 10.2 takes the bins as the contract gives them: a count and a Bounds each.
+        for (int a = 0; a < 3; ++a)
+            if (along[a]) {
+                bins_[a].resize(static_cast<std::size_t>(bins));
+                for (int b = 0; b < bins; ++b)
+                    bins_[a][b] = axis_bins[a][b].sah_bin();
+            }
         SahSplit best;
         int best_axis = -1;
         for (int a = 0; a < 3; ++a)
@@ -322,17 +345,23 @@ private:
         // others' grown on the way; the children's boxes are their bins'.
         left = {g.begin, g.begin, {}, {}};
         right = {g.end, g.end, {}, {}};
+        LaneBox left_centres, right_centres;
         std::uint32_t* index = bvh_.object_index.data();
         while (left.end < right.begin) {
-            const std::uint32_t k = index[left.end];
-            if (bin_of(k, best_axis) <= best.split) {
-                left.centres.grow(centres_[k]);
+            const LaneBox& box = lane_boxes_[index[left.end]];
+            const Float4 c = box.centre();
+            float bin[4];
+            bins_of(box, bin);
+            if (static_cast<int>(bin[best_axis]) <= best.split) {
+                left_centres.grow(c, c);
                 ++left.end;
             } else {
-                right.centres.grow(centres_[k]);
+                right_centres.grow(c, c);
                 std::swap(index[left.end], index[--right.begin]);
             }
         }
+        left.centres = left_centres.bounds();
+        right.centres = right_centres.bounds();
         if (left.end == g.begin || left.end == g.end)
             return false;  // a student's 10.2 chose a plane with an empty side
         for (int b = 0; b < bins; ++b)
@@ -351,12 +380,53 @@ private:
         return middle;
     }
 
+    // A box in four-float lanes (x, y, z and a fourth unused), and a bin of them: the binning grows a
+    // bin by an object's box in two instructions (SSE's minps and maxps) where Bounds::grow takes six,
+    // and it grows three bins an object at every level of the tree: a third of the build's
+    // instructions went to it (chapters/benchmark/README.md, "Chapter 10's steps", step 16). Minimum
+    // and maximum are exact, so the bins hold what Bounds::grow would, bit for bit.
+    struct LaneBox {
+        Float4 min = infinity, max = -infinity;
+
+        // As Bounds::grow: glm::min(min, p) keeps min unless p < min (and glm::max likewise).
+        void grow(Float4 low, Float4 high)
+        {
+            min = less_or_second(low, min);
+            max = greater_or_second(high, max);
+        }
+        Float4 centre() const { return (min + max) * 0.5f; }  // as Bounds::centre, lane by lane
+        Bounds bounds() const
+        {
+            float low[4], high[4];
+            min.store(low);
+            max.store(high);
+            return {point3(low[0], low[1], low[2]), point3(high[0], high[1], high[2])};
+        }
+    };
+    static LaneBox lane_box(const Bounds& b)
+    {
+        return {Float4(b.min.x, b.min.y, b.min.z, 0.0f), Float4(b.max.x, b.max.y, b.max.z, 0.0f)};
+    }
+    struct LaneBin {
+        LaneBox box;
+        int count = 0;
+
+        void grow(const LaneBox& b)
+        {
+            box.grow(b.min, b.max);
+            ++count;
+        }
+        SahBin sah_bin() const { return {count, box.bounds()}; }
+    };
+
     BvhSettings settings_;
     Bvh bvh_;
     BvhStats stats_;
     std::vector<Bounds> boxes_;
     std::vector<point3> centres_;
-    std::vector<SahBin> bins_[3];  // the build's bins along x, y and z, reused node after node
+    std::vector<LaneBox> lane_boxes_;  // boxes_ in lanes (the SAH build's only)
+    std::vector<LaneBin> lane_bins_;   // the binning's bins along x, y and z, reused node after node
+    std::vector<SahBin> bins_[3];      // the same as 10.2 takes them
 };
 
 }  // namespace rt

@@ -49,6 +49,7 @@ struct Float4 {
 #if RT_WIDE_SSE
     __m128 v;
     Float4(float x) : v(_mm_set1_ps(x)) {}  // every lane x
+    Float4(float a, float b, float c, float d) : v(_mm_setr_ps(a, b, c, d)) {}  // lanes 0, 1, 2, 3
     explicit Float4(__m128 x) : v(x) {}
     static Float4 load(const float* p) { return Float4(_mm_loadu_ps(p)); }  // p[0 .. 4)
     void store(float* p) const { _mm_storeu_ps(p, v); }
