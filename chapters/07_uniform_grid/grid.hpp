@@ -228,16 +228,32 @@ inline Bounds bulk_of(const std::vector<Bounds>& boxes)
     if (boxes.empty())
         return bulk;
     const std::size_t q = std::min(boxes.size() / 100, static_cast<std::size_t>(reach_outliers));
-    std::vector<float> low(boxes.size()), high(boxes.size());
-    for (int a = 0; a < 3; ++a) {
-        for (std::size_t k = 0; k < boxes.size(); ++k) {
-            low[k] = boxes[k].min[a];
-            high[k] = -boxes[k].max[a];
+    // The q + 1 least minima and greatest maxima on each axis, in one pass: an array of at most
+    // reach_outliers + 1, sorted, that most boxes pass with one comparison each. (Six nth_elements
+    // over copies of every box's coordinates were 2% of the wide tree's build, by callgrind on the
+    // pyramid: 52.4 million instructions before, 51.4 after.)
+    struct Least {
+        float v[reach_outliers + 1];
+        std::size_t n = 0;
+        void offer(float x, std::size_t keep)
+        {
+            if (n == keep && !(x < v[n - 1]))
+                return;
+            std::size_t i = n < keep ? n++ : n - 1;
+            for (; i > 0 && x < v[i - 1]; --i)
+                v[i] = v[i - 1];
+            v[i] = x;
         }
-        std::nth_element(low.begin(), low.begin() + static_cast<std::ptrdiff_t>(q), low.end());
-        std::nth_element(high.begin(), high.begin() + static_cast<std::ptrdiff_t>(q), high.end());
-        bulk.min[a] = low[q];
-        bulk.max[a] = -high[q];
+    };
+    Least low[3], high[3];  // high: the maxima negated
+    for (const Bounds& b : boxes)
+        for (int a = 0; a < 3; ++a) {
+            low[a].offer(b.min[a], q + 1);
+            high[a].offer(-b.max[a], q + 1);
+        }
+    for (int a = 0; a < 3; ++a) {
+        bulk.min[a] = low[a].v[q];
+        bulk.max[a] = -high[a].v[q];
     }
     return bulk;
 }
