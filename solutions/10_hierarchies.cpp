@@ -70,24 +70,20 @@ SahSplit best_split(const Bounds& parent, const std::vector<SahBin>& bins)
     SahSplit best;
     if (n < 2)
         return best;
-    std::vector<Bounds> right_box(n);
-    std::vector<int> right_count(n, 0);
-    Bounds box;
-    int count = 0;
+    std::vector<SahBin> right(n);  // right[k]: bins k..n - 1 as one, their count and box
+    SahBin suffix;
     for (int k = n - 1; k > 0; --k) {
-        box.grow(bins[k].bounds);
-        count += bins[k].count;
-        right_box[k] = box;
-        right_count[k] = count;
+        suffix.count += bins[k].count;
+        suffix.bounds.grow(bins[k].bounds);
+        right[k] = suffix;
     }
-    Bounds left;
-    int left_count = 0;
+    SahBin left;
     for (int k = 0; k + 1 < n; ++k) {
-        left.grow(bins[k].bounds);
-        left_count += bins[k].count;
-        if (left_count == 0 || right_count[k + 1] == 0)
+        left.count += bins[k].count;
+        left.bounds.grow(bins[k].bounds);
+        if (left.count == 0 || right[k + 1].count == 0)
             continue;
-        const float cost = sah_cost(parent, left, left_count, right_box[k + 1], right_count[k + 1]);
+        const float cost = sah_cost(parent, left.bounds, left.count, right[k + 1].bounds, right[k + 1].count);
         if (cost < best.cost)
             best = {k, cost};
     }
