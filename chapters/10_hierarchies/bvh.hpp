@@ -304,20 +304,22 @@ private:
             scale[a] = static_cast<float>(bins) / spread[a];
             along[a] = scale[a] > 0.0f && scale[a] < infinity;
             axis_bins[a] = &lane_bins_[static_cast<std::size_t>(a * bins)];
-            std::fill(axis_bins[a], axis_bins[a] + bins, LaneBin{});
+            if (along[a])
+                std::fill(axis_bins[a], axis_bins[a] + bins, LaneBin{});
         }
-        // An object's bin along each axis at once: its centre's distance from the lowest times
-        // bins / spread, in lanes; the lesser of that and bins - 1 taken before the conversion to int
-        // (the same as after, for a distance of 0 or more, as every centre's is).
+        // An object's bin along each axis at once, from its centre: the distance from the lowest
+        // times bins / spread, in lanes; the lesser of that and bins - 1 taken before the conversion
+        // to int, which gives the same bin (truncation never decreases, and bins - 1 is whole). A NaN
+        // centre (a box from -infinity to infinity, which no scene's object has) falls in the last bin.
         const Float4 low4(low[0], low[1], low[2], 0.0f), scale4(scale[0], scale[1], scale[2], 0.0f);
         const Float4 last_bin = static_cast<float>(bins - 1);
-        const auto bins_of = [&](const LaneBox& box, float bin[4]) {
-            less_or_second((box.centre() - low4) * scale4, last_bin).store(bin);
+        const auto bins_of = [&](Float4 centre, float bin[4]) {
+            less_or_second((centre - low4) * scale4, last_bin).store(bin);
         };
         for (int i = g.begin; i < g.end; ++i) {
             const LaneBox& box = lane_boxes_[bvh_.object_index[i]];
             float bin[4];
-            bins_of(box, bin);
+            bins_of(box.centre(), bin);
             for (int a = 0; a < 3; ++a)
                 if (along[a])
                     axis_bins[a][static_cast<int>(bin[a])].grow(box);
@@ -351,7 +353,7 @@ private:
             const LaneBox& box = lane_boxes_[index[left.end]];
             const Float4 c = box.centre();
             float bin[4];
-            bins_of(box, bin);
+            bins_of(c, bin);
             if (static_cast<int>(bin[best_axis]) <= best.split) {
                 left_centres.grow(c, c);
                 ++left.end;

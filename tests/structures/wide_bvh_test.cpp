@@ -6,6 +6,7 @@
 #include "10_hierarchies/wide_bvh.hpp"
 #include "tests/ch07/agreement.hpp"
 #include "tests/ch10/closed_sphere.hpp"
+#include "tests/structures/sah_splits.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -116,6 +117,16 @@ TEST_CASE("the four boxes of a wide node are entered exactly when the slab test 
     INFO(entered << " of " << checked << " boxes entered");
     CHECK(entered > checked / 10);
     CHECK(entered < checked);
+}
+
+TEST_CASE("the SAH build bins on these lanes as the lesson bins, one box at a time", "[structures]")
+{
+    // The binary tree the wide one collapses, binned four floats at a time on this program's lanes
+    // (SSE, or the plain C++ of RT_WIDE_SCALAR): each split as tests/structures/sah_splits.hpp
+    // re-derives it.
+    INFO("lanes: " << lanes_kind);
+    const LitScene scene = lit_scene(generated_scene(write_mountain, 5, "mountain 5"));
+    CHECK(check_sah_splits(objects_of(scene, lit_tests), BvhSettings{}, "mountain 5") > 10);
 }
 
 TEST_CASE("collapsed four wide, the tree keeps each leaf of the binary tree once, with its box", "[structures]")
