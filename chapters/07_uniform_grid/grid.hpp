@@ -229,9 +229,9 @@ inline Bounds bulk_of(const std::vector<Bounds>& boxes)
         return bulk;
     const std::size_t q = std::min(boxes.size() / 100, static_cast<std::size_t>(reach_outliers));
     // The q + 1 least minima and greatest maxima on each axis, in one pass: an array of at most
-    // reach_outliers + 1, sorted, that most boxes pass with one comparison each. (Six nth_elements
-    // over copies of every box's coordinates were 2% of the wide tree's build, by callgrind on the
-    // pyramid: 52.4 million instructions before, 51.4 after.)
+    // reach_outliers + 1, sorted, that most boxes pass with one comparison each, where six
+    // nth_elements over copies of every coordinate cost the BVH's build more (chapters/benchmark/
+    // README.md, "Chapter 10's steps", step 16).
     struct Least {
         float v[reach_outliers + 1];
         std::size_t n = 0;
