@@ -12,6 +12,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <utility>
 
@@ -28,7 +29,9 @@ struct RayFrame {
 
 inline RayFrame ray_frame(const Ray& ray)
 {
-    const vec3 ad = glm::abs(ray.dir);
+    // std::fabs, which clears the sign bit, not glm::abs, whose `x >= 0 ? x : -x` GCC compiles to
+    // a branch per axis that a query's new direction mispredicts.
+    const vec3 ad(std::fabs(ray.dir.x), std::fabs(ray.dir.y), std::fabs(ray.dir.z));
     const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
     int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     if (ray.dir[kz] < 0)

@@ -73,6 +73,7 @@ inline Float4 operator*(Float4 a, Float4 b) { return Float4(_mm_mul_ps(a.v, b.v)
 inline Float4 operator/(Float4 a, Float4 b) { return Float4(_mm_div_ps(a.v, b.v)); }
 inline Mask4 operator<(Float4 a, Float4 b) { return {_mm_cmplt_ps(a.v, b.v)}; }
 inline Mask4 operator>(Float4 a, Float4 b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
+inline Mask4 operator<=(Float4 a, Float4 b) { return {_mm_cmple_ps(a.v, b.v)}; }
 inline Mask4 operator==(Float4 a, Float4 b) { return {_mm_cmpeq_ps(a.v, b.v)}; }
 inline Mask4 operator!=(Float4 a, Float4 b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
 inline Mask4 operator&(Mask4 a, Mask4 b) { return {_mm_and_ps(a.v, b.v)}; }
@@ -107,6 +108,7 @@ inline Float4 operator*(Float4 a, Float4 b) { return lanes_detail::each(a, b, []
 inline Float4 operator/(Float4 a, Float4 b) { return lanes_detail::each(a, b, [](float x, float y) { return x / y; }); }
 inline Mask4 operator<(Float4 a, Float4 b) { return lanes_detail::compare(a, b, [](float x, float y) { return x < y; }); }
 inline Mask4 operator>(Float4 a, Float4 b) { return lanes_detail::compare(a, b, [](float x, float y) { return x > y; }); }
+inline Mask4 operator<=(Float4 a, Float4 b) { return lanes_detail::compare(a, b, [](float x, float y) { return x <= y; }); }
 inline Mask4 operator==(Float4 a, Float4 b) { return lanes_detail::compare(a, b, [](float x, float y) { return x == y; }); }
 inline Mask4 operator!=(Float4 a, Float4 b) { return lanes_detail::compare(a, b, [](float x, float y) { return x != y; }); }
 inline Mask4 operator&(Mask4 a, Mask4 b) { return {a.v & b.v}; }
