@@ -61,8 +61,8 @@ inline bool lane_in(unsigned mask, int i) { return (mask >> i & 1u) != 0; }
 // The lane of a mask with exactly one lane in it (1, 2, 4 or 8): its count of trailing zeros, one
 // instruction where the compiler has one. Why not a table of nine: the lane is what the walk waits
 // for between a node's boxes and its child's address, and a table is a load on that path (4-5
-// cycles where the instruction takes 1-3); with the instruction the wide tree ran 1.02-1.11x as
-// fast (chapters/benchmark/README.md, "Chapter 10's steps", step 18).
+// cycles where the instruction takes 1-3). Measured in chapters/benchmark/README.md, "Chapter
+// 10's steps", step 18.
 inline int only_lane(unsigned mask)
 {
 #if defined(__GNUC__) || defined(__clang__)
