@@ -193,6 +193,7 @@ private:
             centres_[k] = boxes_[k].centre();
         }
         if (settings_.split == BvhSplit::sah) {
+            // In object_index's order (the identity here), which the SAH split keeps them in.
             lane_boxes_.resize(static_cast<std::size_t>(n));
             for (int i = 0; i < n; ++i)
                 lane_boxes_[i] = lane_box(boxes_[i]);
@@ -248,6 +249,9 @@ private:
         Group left, right;  // the children, once split
         const auto halve = [&] {
             const int middle = median_split(g.begin, g.end, axis);
+            if (!lane_boxes_.empty())  // the SAH build's boxes follow object_index
+                for (int i = g.begin; i < g.end; ++i)
+                    lane_boxes_[i] = lane_box(boxes_[bvh_.object_index[i]]);
             left = measure(g.begin, middle);
             right = measure(middle, g.end);
             return true;
@@ -317,7 +321,7 @@ private:
             less_or_second((centre - low4) * scale4, last_bin).store(bin);
         };
         for (int i = g.begin; i < g.end; ++i) {
-            const LaneBox& box = lane_boxes_[bvh_.object_index[i]];
+            const LaneBox& box = lane_boxes_[i];
             float bin[4];
             bins_of(box.centre(), bin);
             for (int a = 0; a < 3; ++a)
@@ -343,25 +347,44 @@ private:
             }
         if (best_axis < 0 || make_leaf(g.end - g.begin, depth, settings_.leaf_size, settings_.max_depth, best.cost))
             return false;
-        // The objects of bins 0 .. best.split to the front, the box around their centres and the
-        // others' grown on the way; the children's boxes are their bins'.
-        left = {g.begin, g.begin, {}, {}};
-        right = {g.end, g.end, {}, {}};
-        LaneBox left_centres, right_centres;
+        // The objects of bins 0 .. best.split to the front, their boxes with them, and the box around
+        // each side's centres grown on the way. From both ends, as Hoare partitions: past the objects
+        // already on their side, each pair out of place swapped once (a pass from one end would move
+        // every object of the right side). An object goes left when the binning's bin for it, the
+        // whole part of b = min(t, bins - 1), is at most best.split: exactly when b < best.split + 1,
+        // which compares b in its lane with no conversion to int.
+        const Float4 past_left = static_cast<float>(best.split + 1);
+        const unsigned along_best = 1u << best_axis;
+        const auto goes_left = [&](Float4 centre) {
+            return (bits(less_or_second((centre - low4) * scale4, last_bin) < past_left) & along_best) != 0;
+        };
         std::uint32_t* index = bvh_.object_index.data();
-        while (left.end < right.begin) {
-            const LaneBox& box = lane_boxes_[index[left.end]];
-            const Float4 c = box.centre();
-            float bin[4];
-            bins_of(c, bin);
-            if (static_cast<int>(bin[best_axis]) <= best.split) {
-                left_centres.grow(c, c);
-                ++left.end;
-            } else {
-                right_centres.grow(c, c);
-                std::swap(index[left.end], index[--right.begin]);
+        LaneBox* box = lane_boxes_.data();
+        LaneBox left_centres, right_centres;
+        int i = g.begin, j = g.end;  // [g.begin, i) go left, [j, g.end) go right
+        for (;;) {
+            Float4 ci = 0.0f, cj = 0.0f;
+            while (i < j && goes_left(ci = box[i].centre())) {
+                left_centres.grow(ci, ci);
+                ++i;
             }
+            if (i == j)
+                break;
+            --j;  // box[i] goes right: find one from the back that goes left
+            while (i < j && !goes_left(cj = box[j].centre())) {
+                right_centres.grow(cj, cj);
+                --j;
+            }
+            right_centres.grow(ci, ci);
+            if (i == j)
+                break;
+            left_centres.grow(cj, cj);
+            std::swap(box[i], box[j]);
+            std::swap(index[i], index[j]);
+            ++i;
         }
+        left = {g.begin, i, {}, {}};
+        right = {i, g.end, {}, {}};
         left.centres = left_centres.bounds();
         right.centres = right_centres.bounds();
         if (left.end == g.begin || left.end == g.end)
@@ -426,7 +449,7 @@ private:
     BvhStats stats_;
     std::vector<Bounds> boxes_;
     std::vector<point3> centres_;
-    std::vector<LaneBox> lane_boxes_;  // boxes_ in lanes (the SAH build's only)
+    std::vector<LaneBox> lane_boxes_;  // boxes_ in lanes, in object_index's order (the SAH build's only)
     std::vector<LaneBin> lane_bins_;   // the binning's bins along x, y and z, reused node after node
     std::vector<SahBin> bins_[3];      // the same as 10.2 takes them
 };

@@ -450,6 +450,8 @@ public:
         const Bvh& b = binary.bvh();
         margins_ = binary.margins();
         tree_.object_index = b.object_index;
+        // A wide node for each binary inner node at most, of which a tree of m nodes has (m - 1) / 2.
+        tree_.nodes.reserve(b.nodes.size() / 2 + 1);
         if (!b.nodes.empty()) {
             if (b.nodes[0].count > 0)
                 collapse_leaf_root(b.nodes[0]);
@@ -496,20 +498,21 @@ private:
                     return false;
             return true;
         };
-        // Counted first, so the blocks take one allocation, not a vector's growing copies.
+        // Marked and counted first, so the blocks take one allocation, not a vector's growing copies.
         std::size_t blocks = 0;
-        for (const WideNode& w : tree_.nodes)
+        for (WideNode& w : tree_.nodes)
             for (int i = 0; i < 4; ++i)
-                if (triangles_only(w, i))
+                if (triangles_only(w, i)) {
+                    w.in_blocks |= 1u << i;
                     blocks += (w.count[i] + 3u) / 4u;
+                }
         tree_.blocks.reserve(blocks);
         for (WideNode& w : tree_.nodes)
             for (int i = 0; i < 4; ++i) {
-                if (!triangles_only(w, i))
+                if (!lane_in(w.in_blocks, i))
                     continue;
                 const std::uint32_t* object = &tree_.object_index[w.first[i]];
                 w.first[i] = static_cast<std::uint32_t>(tree_.blocks.size());
-                w.in_blocks |= 1u << i;
                 for (std::uint32_t j = 0; j < w.count[i]; j += 4)
                     tree_.blocks.push_back(four_triangles(objects, object + j, std::min<std::uint32_t>(4, w.count[i] - j)));
             }
