@@ -68,6 +68,8 @@ void flush_counters();
 Counts total_counts();
 void reset_counters();
 
+inline std::uint64_t total_count(Counter c) { return counted(total_counts(), c); }
+
 // Every ray of every kind.
 std::uint64_t total_rays(const Counts& counts);
 

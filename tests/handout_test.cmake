@@ -280,8 +280,10 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -S "${out}" -B "${out}/build" -D RT_G
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the handout with OPEN_EXERCISES=10.7 does not configure to grade:\n${log}")
 endif()
-# The build files name each object they compile (build.ninja, or a Makefile's build.make).
-file(GLOB_RECURSE build_files "${out}/build/*.ninja" "${out}/build/*build.make" "${out}/build/*.vcxproj")
+# The build files name each object they compile (build.ninja, or a Makefile's build.make), and a
+# unity build's batches (RT_UNITY_TESTS) each file they include.
+file(GLOB_RECURSE build_files "${out}/build/*.ninja" "${out}/build/*build.make" "${out}/build/*.vcxproj"
+  "${out}/build/unity_*.cxx")
 set(compiled "")
 foreach(f IN LISTS build_files)
   file(STRINGS "${f}" lines REGEX "ch[0-9][0-9]/open_[a-z_]+\\.cpp")

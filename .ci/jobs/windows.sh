@@ -5,6 +5,8 @@
 #
 # GLM, stb and Catch2 v2 are header-only: the build reads Debian's headers through a folder of
 # links, so that nothing else of /usr/include (Linux's C library) reaches the Windows compiler.
+# The test files compile one by one here (RT_UNITY_TESTS=OFF), not in batches as elsewhere: each
+# graded file is checked to include what it uses.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 kit=$(pwd)
@@ -16,7 +18,7 @@ ln -sfn /usr/include/catch2 "$headers/catch2"
 
 cmake -S "$kit" -B "$work/build" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$kit/.ci/mingw-w64.cmake" -DCMAKE_BUILD_TYPE=Release \
   -DRT_GLM_INCLUDE_DIR="$headers" -DRT_STB_INCLUDE_DIR=/usr/include/stb -DRT_CATCH2_INCLUDE_DIR="$headers" \
-  -DRT_CATCH2_MAJOR=2 >/dev/null
+  -DRT_CATCH2_MAJOR=2 -DRT_UNITY_TESTS=OFF >/dev/null
 cmake --build "$work/build" --target programs_and_graders
 
 wine=""

@@ -11,7 +11,7 @@ using optics::radians;
 
 namespace {
 
-std::string query(float cos_i, float ior)
+std::string exact_query(float cos_i, float ior)
 {
     return optics::call("fresnel_dielectric", cos_i, ior);
 }
@@ -20,7 +20,7 @@ void check_reflectance(float cos_i, float ior, double tolerance)
 {
     const float R = fresnel_dielectric(cos_i, ior);
     const double want = optics::fresnel_reference(cos_i, ior);
-    INFO(query(cos_i, ior) << ": got " << R << ", expected " << want);
+    INFO(exact_query(cos_i, ior) << ": got " << R << ", expected " << want);
     REQUIRE(std::isfinite(R));
     CHECK(std::abs(R - want) <= tolerance);
 }
@@ -33,7 +33,7 @@ GRADED_TEST("fresnel_dielectric: head-on, R0 = ((n1 - n2) / (n1 + n2))^2 from ei
         for (const float cos_i : {1.0f, -1.0f})
             check_reflectance(cos_i, ior, 1e-6);
     const float glass = fresnel_dielectric(1.0f, 1.5f);
-    INFO(query(1.0f, 1.5f) << ": got " << glass << ", expected 0.04");
+    INFO(exact_query(1.0f, 1.5f) << ": got " << glass << ", expected 0.04");
     CHECK(std::abs(glass - 0.04f) <= 1e-6f);
 }
 
@@ -57,7 +57,7 @@ GRADED_TEST("fresnel_dielectric: total internal reflection reflects everything (
         for (const double angle : {optics::critical_degrees(ior) + 0.5, 60.0, 80.0, 90.0}) {
             const float cos_i = -static_cast<float>(std::cos(radians(angle)));
             const float R = fresnel_dielectric(cos_i, ior);
-            INFO(query(cos_i, ior) << ": got " << R << ", expected exactly 1 (beyond the critical angle "
+            INFO(exact_query(cos_i, ior) << ": got " << R << ", expected exactly 1 (beyond the critical angle "
                  << optics::critical_degrees(ior) << ")");
             CHECK(R == 1.0f);
         }
@@ -76,7 +76,7 @@ GRADED_TEST("fresnel_dielectric: the same reflectance both ways along a path (en
             const double theta_t = std::asin(std::sin(radians(angle)) / ior);
             const float in = static_cast<float>(std::cos(radians(angle))), out = -static_cast<float>(std::cos(theta_t));
             const float R_in = fresnel_dielectric(in, ior), R_out = fresnel_dielectric(out, ior);
-            INFO(query(in, ior) << " = " << R_in << "; " << query(out, ior) << " = " << R_out
+            INFO(exact_query(in, ior) << " = " << R_in << "; " << exact_query(out, ior) << " = " << R_out
                  << "; expected both " << optics::fresnel_reference(in, ior));
             CHECK(std::abs(R_in - R_out) <= 2e-5f);
             CHECK(std::abs(R_in - optics::fresnel_reference(in, ior)) <= 1e-5);
@@ -90,7 +90,7 @@ STABILITY_TEST("fresnel_dielectric: at the critical angle and one float step eit
         const float critical_cos = static_cast<float>(std::sqrt(1.0 - 1.0 / (ior_d * ior_d)));
         for (const float c : {std::nextafter(critical_cos, 0.0f), critical_cos, std::nextafter(critical_cos, 2.0f)}) {
             const float R = fresnel_dielectric(-c, ior);
-            INFO(query(-c, ior) << ": got " << R << ", expected 0.99 to 1 at the critical angle "
+            INFO(exact_query(-c, ior) << ": got " << R << ", expected 0.99 to 1 at the critical angle "
                  << optics::critical_degrees(ior));
             REQUIRE(std::isfinite(R));
             CHECK(R >= 0.99f);
@@ -99,7 +99,7 @@ STABILITY_TEST("fresnel_dielectric: at the critical angle and one float step eit
         const double critical = optics::critical_degrees(ior);
         const float beyond = -static_cast<float>(std::cos(radians(critical + 0.01)));
         const float R_beyond = fresnel_dielectric(beyond, ior);
-        INFO(query(beyond, ior) << ": got " << R_beyond << ", expected exactly 1");
+        INFO(exact_query(beyond, ior) << ": got " << R_beyond << ", expected exactly 1");
         CHECK(R_beyond == 1.0f);
         check_reflectance(-static_cast<float>(std::cos(radians(critical - 0.01))), ior, 2e-3);
     }
@@ -113,20 +113,20 @@ STABILITY_TEST("fresnel_dielectric: never a NaN: ior = 1 reflects nothing, grazi
         for (const float sign : {1.0f, -1.0f}) {
             const float cos_i = sign * static_cast<float>(std::cos(radians(angle)));
             const float R = fresnel_dielectric(cos_i, 1.0f);
-            INFO(query(cos_i, 1.0f) << ": got " << R << ", expected 0");
+            INFO(exact_query(cos_i, 1.0f) << ": got " << R << ", expected 0");
             CHECK(std::abs(R) <= 1e-6f);
         }
     for (const float cos_i : {0.0f, -0.0f, 1e-30f, -1e-30f})
         for (const float ior : {1.0f, 1.5f}) {
             const float R = fresnel_dielectric(cos_i, ior);
-            INFO(query(cos_i, ior) << ": got " << R << ", expected 1 (grazing)");
+            INFO(exact_query(cos_i, ior) << ": got " << R << ", expected 1 (grazing)");
             REQUIRE(std::isfinite(R));
             CHECK(std::abs(R - 1.0f) <= 1e-6f);
         }
     // A cosine from float-normalised vectors can be 1 + 1e-7: R0 still.
     for (const float cos_i : {std::nextafter(1.0f, 2.0f), -std::nextafter(1.0f, 2.0f)}) {
         const float R = fresnel_dielectric(cos_i, 1.5f);
-        INFO(query(cos_i, 1.5f) << ": got " << R << ", expected R0 = 0.04");
+        INFO(exact_query(cos_i, 1.5f) << ": got " << R << ", expected R0 = 0.04");
         REQUIRE(std::isfinite(R));
         CHECK(std::abs(R - 0.04f) <= 1e-6f);
     }
@@ -139,12 +139,12 @@ GRADED_TEST("fresnel_dielectric: leaving at ior 2 where sin^2(theta_t) is exactl
     const float at = 0x1.bb67aep-1f, below = std::nextafter(at, 0.0f), above = std::nextafter(at, 1.0f);
     for (const float c : {below, at}) {
         const float R = fresnel_dielectric(-c, 2.0f);
-        INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+        INFO(exact_query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
              << ", expected exactly 1 (sin^2(theta_t) " << (c == at ? "= 1" : "> 1") << " in float)");
         CHECK(R == 1.0f);
     }
     const float R = fresnel_dielectric(-above, 2.0f);
-    INFO(query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
+    INFO(exact_query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
     REQUIRE(std::isfinite(R));
     CHECK(R >= 0.99f);
     CHECK(R <= 1.0f);
@@ -159,13 +159,13 @@ GRADED_TEST("fresnel_dielectric: 0.02 to 0.03 degrees from grazing (cos_i 3.5e-4
     for (const float c : {3.5e-4f, 5e-4f})
         for (const float sign : {1.0f, -1.0f}) {
             const float R = fresnel_dielectric(sign * c, 1.0f);
-            INFO(query(sign * c, 1.0f) << ": got " << R << ", expected about 0 (at most 0.01): ior 1 is no interface");
+            INFO(exact_query(sign * c, 1.0f) << ": got " << R << ", expected about 0 (at most 0.01): ior 1 is no interface");
             REQUIRE(std::isfinite(R));
             CHECK(R >= 0.0f);
             CHECK(R <= 0.01f);
             // Glass at the same angle: nearly everything reflects (R = 0.998 and 0.997).
             const float R_glass = fresnel_dielectric(sign * c, 1.5f);
-            INFO(query(sign * c, 1.5f) << ": got " << R_glass << ", expected at least 0.99 (near grazing)");
+            INFO(exact_query(sign * c, 1.5f) << ": got " << R_glass << ", expected at least 0.99 (near grazing)");
             CHECK(R_glass >= 0.99f);
             CHECK(R_glass <= 1.0f);
         }
@@ -179,7 +179,7 @@ GRADED_TEST("fresnel_dielectric: leaving at ior 2 one float step inside the edge
     // internal reflection only; 1 - cos_i^2 computed a rounding too large tips this ray over the edge.
     const float c = 0x1.bb67b0p-1f;
     const float R = fresnel_dielectric(-c, 2.0f);
-    INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+    INFO(exact_query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
          << ", expected about 0.997 (at least 0.99, at most 0.999): sin^2(theta_t) is below 1 there");
     REQUIRE(std::isfinite(R));
     CHECK(R >= 0.99f);
@@ -203,7 +203,7 @@ GRADED_TEST("fresnel_dielectric: at grazing incidence from outside (cos_i = +0 o
     for (const float ior : {1.333f, 1.5f, 2.4f, 1.0f})
         for (const float cos_i : {0.0f, -0.0f}) {
             const float R = fresnel_dielectric(cos_i, ior);
-            INFO(query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
+            INFO(exact_query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
             CHECK(R == 1.0f);
         }
 }

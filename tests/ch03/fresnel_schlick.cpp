@@ -11,7 +11,7 @@ using optics::radians;
 
 namespace {
 
-std::string query(float cos_i, float ior)
+std::string schlick_query(float cos_i, float ior)
 {
     return optics::call("fresnel_schlick", cos_i, ior);
 }
@@ -27,7 +27,7 @@ void check_schlick(float cos_i, float ior, double tolerance)
 {
     const float R = fresnel_schlick(cos_i, ior);
     const double want = optics::schlick_reference(cos_i, ior);
-    INFO(query(cos_i, ior) << ": got " << R << ", expected " << want
+    INFO(schlick_query(cos_i, ior) << ": got " << R << ", expected " << want
          << " (Schlick's curve of cos_i everywhere would give " << with_cos_i(cos_i, ior) << ")");
     REQUIRE(std::isfinite(R));
     CHECK(std::abs(R - want) <= tolerance);
@@ -57,7 +57,7 @@ GRADED_TEST("fresnel_schlick: beyond the critical angle exactly 1 (total interna
         for (const double angle : {optics::critical_degrees(ior) + 0.5, 60.0, 89.0, 90.0}) {
             const float cos_i = -static_cast<float>(std::cos(radians(angle)));
             const float R = fresnel_schlick(cos_i, ior);
-            INFO(query(cos_i, ior) << ": got " << R << ", expected exactly 1 (Schlick's curve of cos_i would give "
+            INFO(schlick_query(cos_i, ior) << ": got " << R << ", expected exactly 1 (Schlick's curve of cos_i would give "
                  << with_cos_i(cos_i, ior) << ")");
             CHECK(R == 1.0f);
         }
@@ -85,14 +85,14 @@ STABILITY_TEST("fresnel_schlick: within 0.06 (water), 0.037 (glass), 0.075 (diam
                 const float cos_i = sign * static_cast<float>(std::cos(radians(0.01 * k)));
                 const float R = fresnel_schlick(cos_i, c.ior);
                 const double exact = optics::fresnel_reference(cos_i, c.ior);
-                INFO(query(cos_i, c.ior) << ": got " << R << ", the exact reflectance is " << exact
+                INFO(schlick_query(cos_i, c.ior) << ": got " << R << ", the exact reflectance is " << exact
                      << "; Schlick stays within " << c.bound);
                 REQUIRE(std::isfinite(R));
                 REQUIRE(std::abs(R - exact) <= c.bound);
             }
     for (const float cos_i : {0.0f, -0.0f, std::nextafter(1.0f, 2.0f), -std::nextafter(1.0f, 2.0f)}) {
         const float R = fresnel_schlick(cos_i, 1.5f);
-        INFO(query(cos_i, 1.5f) << ": got " << R << ", expected 1 at grazing, R0 = 0.04 head-on");
+        INFO(schlick_query(cos_i, 1.5f) << ": got " << R << ", expected 1 at grazing, R0 = 0.04 head-on");
         REQUIRE(std::isfinite(R));
         CHECK(std::abs(R - (cos_i == 0.0f ? 1.0f : 0.04f)) <= 1e-6f);
     }
@@ -104,13 +104,13 @@ GRADED_TEST("fresnel_schlick: leaving at ior 2 where sin^2(theta_t) is exactly 1
     const float at = 0x1.bb67aep-1f, below = std::nextafter(at, 0.0f), above = std::nextafter(at, 1.0f);
     for (const float c : {below, at}) {
         const float R = fresnel_schlick(-c, 2.0f);
-        INFO(query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
+        INFO(schlick_query(-c, 2.0f) << ", cos_i = " << std::hexfloat << -c << std::defaultfloat << ": got " << R
              << ", expected exactly 1 (sin^2(theta_t) " << (c == at ? "= 1" : "> 1") << " in float; Schlick's curve of "
              << "cos_i would give " << with_cos_i(-c, 2.0f) << ")");
         CHECK(R == 1.0f);
     }
     const float R = fresnel_schlick(-above, 2.0f);
-    INFO(query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
+    INFO(schlick_query(-above, 2.0f) << ", one float step inside the critical angle: got " << R << ", expected 0.99 to 1");
     REQUIRE(std::isfinite(R));
     CHECK(R >= 0.99f);
     CHECK(R <= 1.0f);
@@ -133,7 +133,7 @@ GRADED_TEST("fresnel_schlick: leaving an index one float step above 1 (1 + 2^-23
     // (in float, 1 + 1.2e-7 or more): total internal reflection, R = 1, not (1 - cos_i)^5 = 0.999.
     const float ior = std::nextafter(1.0f, 2.0f);
     const float R = fresnel_schlick(-2e-4f, ior);
-    INFO(query(-2e-4f, ior) << " (ior = 1 + 2^-23): got " << R
+    INFO(schlick_query(-2e-4f, ior) << " (ior = 1 + 2^-23): got " << R
          << ", expected exactly 1 (total internal reflection: eta = ior > 1, the denser side's rule)");
     CHECK(R == 1.0f);
 }
@@ -155,7 +155,7 @@ GRADED_TEST("fresnel_schlick: at grazing incidence (cos_i = +0 or -0) exactly 1,
     for (const float ior : {1.333f, 1.5f, 2.4f, 1.0f / 1.333f})
         for (const float cos_i : {0.0f, -0.0f}) {
             const float R = fresnel_schlick(cos_i, ior);
-            INFO(query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
+            INFO(schlick_query(cos_i, ior) << ": got " << std::setprecision(9) << R << ", expected exactly 1 (grazing)");
             CHECK(R == 1.0f);
         }
 }

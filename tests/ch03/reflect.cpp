@@ -17,7 +17,7 @@ dvec3 mirror_reference(const vec3& v, const vec3& n)
     return v_s - v_n;
 }
 
-std::string query(const vec3& v, const vec3& n)
+std::string reflect_query(const vec3& v, const vec3& n)
 {
     return "reflect(v = " + show(v) + ", n = " + show(n) + ")";
 }
@@ -26,7 +26,7 @@ void check_against_reference(const vec3& v, const vec3& n, double tolerance)
 {
     const vec3 r = reflect(v, n);
     const dvec3 want = mirror_reference(v, n);
-    INFO(query(v, n) << ": got " << show(r) << ", expected " << show(vec3(want)) << " (v_s kept, v_n reversed)");
+    INFO(reflect_query(v, n) << ": got " << show(r) << ", expected " << show(vec3(want)) << " (v_s kept, v_n reversed)");
     REQUIRE(optics::distance(r, want) <= tolerance);
 }
 
@@ -39,7 +39,7 @@ GRADED_TEST("reflect: keeps the part of v along the surface and reverses the par
     {
         const vec3 v = glm::normalize(vec3(1, -1, 0));
         const vec3 r = reflect(v, up);
-        INFO(query(v, up) << ": got " << show(r) << ", expected " << show(glm::normalize(vec3(1, 1, 0))));
+        INFO(reflect_query(v, up) << ": got " << show(r) << ", expected " << show(glm::normalize(vec3(1, 1, 0))));
         CHECK(glm::length(r - glm::normalize(vec3(1, 1, 0))) <= 1e-6f);
     }
     // Oblique rays on tilted surfaces, against the slide's v_s - v_n in double.
@@ -55,7 +55,7 @@ GRADED_TEST("reflect: the normal's sign does not matter, the angle to the normal
     const vec3 v = glm::normalize(vec3(0.4f, -0.7f, -0.6f));
     const vec3 n = glm::normalize(vec3(-0.2f, 1.0f, 0.3f));
     const vec3 r = reflect(v, n), r_flipped = reflect(v, -n), back = reflect(r, n);
-    INFO(query(v, n) << " = " << show(r) << "; with -n: " << show(r_flipped) << "; reflected again: " << show(back)
+    INFO(reflect_query(v, n) << " = " << show(r) << "; with -n: " << show(r_flipped) << "; reflected again: " << show(back)
          << "; r.n = " << glm::dot(r, n) << ", expected -v.n = " << -glm::dot(v, n));
     CHECK(glm::length(r - r_flipped) <= 1e-6f);
     CHECK(std::abs(glm::dot(r, n) + glm::dot(v, n)) <= 1e-6f);
@@ -68,14 +68,14 @@ STABILITY_TEST("reflect: unit length kept and never a NaN, grazing (r = v), head
     const vec3 grazing{0.6f, 0.0f, 0.8f}, up{0, 1, 0};
     {
         const vec3 r = reflect(grazing, up);
-        INFO(query(grazing, up) << ": got " << show(r) << ", expected v itself");
+        INFO(reflect_query(grazing, up) << ": got " << show(r) << ", expected v itself");
         CHECK(r == grazing);
     }
     // Head-on, n along -v and along v: straight back.
     const vec3 v = glm::normalize(vec3(1, -2, 3));
     for (const vec3 n : {-v, v}) {
         const vec3 r = reflect(v, n);
-        INFO(query(v, n) << ": got " << show(r) << ", expected -v = " << show(-v));
+        INFO(reflect_query(v, n) << ": got " << show(r) << ", expected -v = " << show(-v));
         CHECK(glm::length(r + v) <= 1e-6f);
     }
     // Random unit v and n (float-normalised, so a few ulps off unit): |r| stays within 1e-6 of 1
@@ -85,7 +85,7 @@ STABILITY_TEST("reflect: unit length kept and never a NaN, grazing (r = v), head
         const vec3 a = glm::normalize(vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f));
         const vec3 b = glm::normalize(vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, rng.next_float() - 0.5f));
         const vec3 r = reflect(a, b);
-        INFO(query(a, b) << ": got " << show(r) << " of length " << glm::length(r));
+        INFO(reflect_query(a, b) << ": got " << show(r) << " of length " << glm::length(r));
         REQUIRE(std::isfinite(r.x + r.y + r.z));
         REQUIRE(std::abs(glm::length(r) - 1.0f) <= 1e-6f);
         check_against_reference(a, b, 1e-6);
@@ -108,7 +108,7 @@ GRADED_TEST("reflect: off a mirror facing along an axis, exactly that coordinate
                 vec3 want = v;
                 want[axis] = -v[axis];
                 const vec3 r = reflect(v, n);
-                INFO(query(v, n) << ": got " << show(r) << ", expected exactly " << show(want)
+                INFO(reflect_query(v, n) << ": got " << show(r) << ", expected exactly " << show(want)
                                  << " (only the coordinate along n reversed, no rounding: each step is exact)");
                 CHECK(r == want);
             }

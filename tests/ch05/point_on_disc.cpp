@@ -13,13 +13,13 @@ using namespace rt::grader;
 namespace {
 
 // A disc of radius 0.8 tilted toward the scene, away from the origin, and one facing straight down.
-const AreaLight tilted = disc_light({1.5f, 4.0f, -2.0f}, glm::normalize(vec3(-0.3f, -0.9f, 0.3f)), 0.8f, color(1.0f));
-const AreaLight ceiling = disc_light({0.0f, 3.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.5f, color(1.0f));
+const AreaLight tilted_disc = disc_light({1.5f, 4.0f, -2.0f}, glm::normalize(vec3(-0.3f, -0.9f, 0.3f)), 0.8f, color(1.0f));
+const AreaLight ceiling_disc = disc_light({0.0f, 3.0f, 0.0f}, {0.0f, -1.0f, 0.0f}, 0.5f, color(1.0f));
 
 constexpr int draws = 40000;
 // A share p of `draws` points has the binomial standard error sqrt(p (1 - p) / draws); 5 of them
 // makes a false failure about one in a million per bin (and the seeded draws never change).
-constexpr double z_allowed = 5.0;
+constexpr double bin_z_allowed = 5.0;
 
 double standard_error(double p)
 {
@@ -52,7 +52,7 @@ GRADED_TEST("point_on_disc: every point lies on the disc, in its plane and withi
                                {one_minus_epsilon, one_minus_epsilon}, {0.5f, 0.0f}, {0.25f, 0.9f}};
     for (int k = 0; k < 2000; ++k)
         us.push_back({rng.next_float(), rng.next_float()});
-    for (const AreaLight& light : {tilted, ceiling}) {
+    for (const AreaLight& light : {tilted_disc, ceiling_disc}) {
         double outer = 0.0;
         for (const sample2 u : us) {
             const point3 got = point_on_disc(light, u);
@@ -77,7 +77,7 @@ GRADED_TEST("point_on_disc: area-preserving, the share of points within r sqrt(k
     // A ring of the disc from radius sqrt((k-1)/8) to sqrt(k/8) has 1/8 of its area: uniform points
     // put 1/8 of themselves there. r = u.x would put a quarter of them in the first two rings'
     // half-radius, r = u.x^2 even more.
-    for (const AreaLight& light : {tilted, ceiling}) {
+    for (const AreaLight& light : {tilted_disc, ceiling_disc}) {
         const std::vector<Landing> points = landings(light, 54);
         std::vector<int> rings(8, 0);
         for (const Landing& p : points)
@@ -86,10 +86,10 @@ GRADED_TEST("point_on_disc: area-preserving, the share of points within r sqrt(k
             const double share = static_cast<double>(rings[k]) / draws;
             INFO(show(light) << ": of " << draws << " uniform u, a share " << share << " landed between "
                  << std::sqrt(k / 8.0) << " and " << std::sqrt((k + 1) / 8.0) << " radii from the centre, "
-                 << "an eighth of the disc's area; expected 0.125 within " << z_allowed * standard_error(0.125)
+                 << "an eighth of the disc's area; expected 0.125 within " << bin_z_allowed * standard_error(0.125)
                  << " (5 standard errors). Shares per ring: " << rings[0] << ' ' << rings[1] << ' ' << rings[2] << ' '
                  << rings[3] << ' ' << rings[4] << ' ' << rings[5] << ' ' << rings[6] << ' ' << rings[7]);
-            CHECK(std::abs(share - 0.125) <= z_allowed * standard_error(0.125));
+            CHECK(std::abs(share - 0.125) <= bin_z_allowed * standard_error(0.125));
         }
     }
 }
@@ -97,7 +97,7 @@ GRADED_TEST("point_on_disc: area-preserving, the share of points within r sqrt(k
 GRADED_TEST("point_on_disc: the angle is uniform too, each of 8 sectors gets an eighth of the points", "05.2", 2)
 {
     constexpr double pi = 3.14159265358979323846;
-    for (const AreaLight& light : {tilted, ceiling}) {
+    for (const AreaLight& light : {tilted_disc, ceiling_disc}) {
         const std::vector<Landing> points = landings(light, 55);
         std::vector<int> sectors(8, 0);
         for (const Landing& p : points) {
@@ -108,8 +108,8 @@ GRADED_TEST("point_on_disc: the angle is uniform too, each of 8 sectors gets an 
             const double share = static_cast<double>(sectors[k]) / draws;
             INFO(show(light) << ": of " << draws << " uniform u, a share " << share << " landed in the sector from "
                  << -180 + 45 * k << " to " << -135 + 45 * k << " degrees around axis_u; expected 0.125 within "
-                 << z_allowed * standard_error(0.125));
-            CHECK(std::abs(share - 0.125) <= z_allowed * standard_error(0.125));
+                 << bin_z_allowed * standard_error(0.125));
+            CHECK(std::abs(share - 0.125) <= bin_z_allowed * standard_error(0.125));
         }
     }
 }
@@ -127,7 +127,7 @@ GRADED_TEST("point_on_disc: u a hair apart land a hair apart, across the square'
     Rng rng(57, 0);
     for (int k = 0; k < 12; ++k)
         coords.push_back(rng.next_float() * (1.0f - 2 * step));
-    for (const AreaLight& light : {tilted, ceiling}) {
+    for (const AreaLight& light : {tilted_disc, ceiling_disc}) {
         double farthest = 0.0;  // a map that sends every u to one point is continuous, but no map of the disc
         for (const float x : coords)
             for (const float y : coords)
@@ -153,15 +153,15 @@ STABILITY_TEST("point_on_disc: never a NaN, at the square's centre (0/0 in the c
     for (const sample2 u : {sample2(0.5f, 0.5f), sample2(below_half, 0.5f), sample2(0.5f, above_half),
                             sample2(below_half, above_half), sample2(0.0f, 0.0f), sample2(one_minus_epsilon),
                             sample2(0.0f, 0.5f), sample2(0.5f, one_minus_epsilon), sample2(1e-30f, 0.5f)}) {
-        const point3 got = point_on_disc(tilted, u);
-        const OnLight on = on_light(tilted, got);
-        INFO(show(tilted) << ", " << show(u) << ": got " << show(got) << "; expected a point of the disc, finite");
+        const point3 got = point_on_disc(tilted_disc, u);
+        const OnLight on = on_light(tilted_disc, got);
+        INFO(show(tilted_disc) << ", " << show(u) << ": got " << show(got) << "; expected a point of the disc, finite");
         REQUIRE((std::isfinite(got.x) && std::isfinite(got.y) && std::isfinite(got.z)));
         REQUIRE(std::hypot(on.x, on.y) <= 1.0 + 1e-5);
     }
     // The square's far corner lands on the rim, under either area-preserving map.
-    const OnLight corner = on_light(tilted, point_on_disc(tilted, sample2(one_minus_epsilon)));
-    INFO(show(tilted) << ": the square's far corner u = (one_minus_epsilon, one_minus_epsilon) landed "
+    const OnLight corner = on_light(tilted_disc, point_on_disc(tilted_disc, sample2(one_minus_epsilon)));
+    INFO(show(tilted_disc) << ": the square's far corner u = (one_minus_epsilon, one_minus_epsilon) landed "
          << std::hypot(corner.x, corner.y) << " radii from the centre; expected the rim, 1");
     CHECK(std::abs(std::hypot(corner.x, corner.y) - 1.0) <= 1e-5);
 }
@@ -174,8 +174,8 @@ GRADED_TEST("point_on_disc: uniform points on the disc, each of 4 rings by 16 se
     // keeps the 8 sectors even but not their halves.
     constexpr double pi = 3.14159265358979323846;
     constexpr int cells_draws = 100000;
-    const double p = 1.0 / 64.0, allowed = z_allowed * std::sqrt(p * (1.0 - p) / cells_draws);
-    for (const AreaLight& light : {tilted, ceiling}) {
+    const double p = 1.0 / 64.0, allowed = bin_z_allowed * std::sqrt(p * (1.0 - p) / cells_draws);
+    for (const AreaLight& light : {tilted_disc, ceiling_disc}) {
         Rng rng(56, 0);
         std::vector<int> cells(64, 0);
         for (int k = 0; k < cells_draws; ++k) {

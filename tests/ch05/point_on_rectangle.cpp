@@ -7,8 +7,8 @@ using namespace rt::grader;
 namespace {
 
 // A tilted rectangle, 3 by 1, away from the origin, and an axis-aligned one.
-const AreaLight tilted = rectangle_light({2.0f, 5.0f, -1.0f}, {1.2f, 0.0f, 0.9f}, {0.0f, 0.5f, 0.0f}, color(1.0f));
-const AreaLight ceiling = rectangle_light({0.0f, 3.0f, 0.0f}, {0.5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.25f}, color(1.0f));
+const AreaLight tilted_rectangle = rectangle_light({2.0f, 5.0f, -1.0f}, {1.2f, 0.0f, 0.9f}, {0.0f, 0.5f, 0.0f}, color(1.0f));
+const AreaLight ceiling_rectangle = rectangle_light({0.0f, 3.0f, 0.0f}, {0.5f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.25f}, color(1.0f));
 
 // Points equal within float rounding of coordinates of size `scale`.
 bool same_point(const point3& got, const point3& want, float scale)
@@ -43,7 +43,7 @@ point3 require_at_half_axes(const AreaLight& light, sample2 u, double size)
 
 GRADED_TEST("point_on_rectangle: (0, 0) is the corner centre - axis_u - axis_v, (1/2, 1/2) the centre, u.x runs along axis_u", "05.1", 2)
 {
-    for (const AreaLight& light : {tilted, ceiling}) {
+    for (const AreaLight& light : {tilted_rectangle, ceiling_rectangle}) {
         const point3 c = light.centre;
         const vec3 a = light.axis_u, b = light.axis_v;
         check(light, {0.0f, 0.0f}, c - a - b, "the corner");
@@ -60,10 +60,10 @@ GRADED_TEST("point_on_rectangle: any u lands at (2 u.x - 1, 2 u.y - 1) in half-a
     Rng rng(51, 0);
     for (int k = 0; k < 1000; ++k) {
         const sample2 u{rng.next_float(), rng.next_float()}, w{rng.next_float(), rng.next_float()};
-        const point3 got = require_at_half_axes(tilted, u, 1.0);
-        const point3 mid = point_on_rectangle(tilted, 0.5f * (u + w));
-        const point3 want = 0.5f * (got + point_on_rectangle(tilted, w));
-        INFO(show(tilted) << ": the point of the midpoint of " << show(u) << " and " << show(w) << " is " << show(mid)
+        const point3 got = require_at_half_axes(tilted_rectangle, u, 1.0);
+        const point3 mid = point_on_rectangle(tilted_rectangle, 0.5f * (u + w));
+        const point3 want = 0.5f * (got + point_on_rectangle(tilted_rectangle, w));
+        INFO(show(tilted_rectangle) << ": the point of the midpoint of " << show(u) << " and " << show(w) << " is " << show(mid)
              << ", expected the midpoint of their points, " << show(want));
         REQUIRE(same_point(mid, want, 10.0f));
     }

@@ -9,20 +9,20 @@ using namespace rt::grader;
 namespace {
 
 // 4 x 2 x 5 cells of size 0.5 x 1 x 0.2 over the box from (-1, 0, 2) to (1, 2, 3).
-const GridShape grid = grid_shape({{-1, 0, 2}, {1, 2, 3}}, {4, 2, 5});
+const GridShape grid_4x2x5 = grid_shape({{-1, 0, 2}, {1, 2, 3}}, {4, 2, 5});
 
 void check_cell(const point3& p, const cell3& expected, const char* why)
 {
-    const cell3 got = cell_of(grid, p);
-    INFO("07.2 cell_of(" << show(grid) << ", " << show(p) << "): got " << show(got) << ", expected " << show(expected) << ": "
+    const cell3 got = cell_of(grid_4x2x5, p);
+    INFO("07.2 cell_of(" << show(grid_4x2x5) << ", " << show(p) << "): got " << show(got) << ", expected " << show(expected) << ": "
          << why);
     CHECK(got == expected);
 }
 
 void check_range(const Bounds& b, const cell3& first, const cell3& last, const char* why)
 {
-    const CellRange got = cells_overlapping(grid, b);
-    INFO("07.3 cells_overlapping(" << show(grid) << ", " << show(b) << "): got " << show(got.first) << " to "
+    const CellRange got = cells_overlapping(grid_4x2x5, b);
+    INFO("07.3 cells_overlapping(" << show(grid_4x2x5) << ", " << show(b) << "): got " << show(got.first) << " to "
          << show(got.last) << ", expected " << show(first) << " to " << show(last) << ": " << why);
     CHECK(got.first == first);
     CHECK(got.last == last);

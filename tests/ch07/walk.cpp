@@ -63,7 +63,7 @@ void check_missed(const Ray& ray, Interval range, const char* why)
 }
 
 constexpr float inf = infinity;
-const Interval all{0.0f, infinity};
+const Interval whole_ray{0.0f, infinity};
 
 // The walk's cells against the oracle's, for one ray.
 void check_walk(const GridShape& g, const Ray& ray, Interval range, const char* why)
@@ -82,21 +82,21 @@ void check_walk(const GridShape& g, const Ray& ray, Interval range, const char* 
 
 GRADED_TEST("start_walk: a ray entering from outside starts in the entry cell, with the first boundary's t on its axis", "07.4", 3)
 {
-    check_start({{-1, 0.5f, 0.5f}, {1, 0, 0}}, all,
+    check_start({{-1, 0.5f, 0.5f}, {1, 0, 0}}, whole_ray,
                 {0, {4, 0, 0}, {2, inf, inf}, {1, inf, inf}, 1, 5, inf},
                 "it enters cell (0, 0, 0) at t = 1, meets x = 1 at t = 2 and leaves the box at x = 4, t = 5");
-    check_start({{4.5f, 1.5f, 1.5f}, {-1, 0, 0}}, all,
+    check_start({{4.5f, 1.5f, 1.5f}, {-1, 0, 0}}, whole_ray,
                 {15, {-4, 0, 0}, {1.5f, inf, inf}, {1, inf, inf}, 0.5f, 4.5f, inf},
                 "going down x it enters cell (3, 1, 1) at x = 4, meets x = 3 at t = 1.5 and leaves at x = 0, t = 4.5");
 }
 
 GRADED_TEST("start_walk: a ray starting inside steps on every axis it moves along; t_end is the first face it reaches", "07.4", 3)
 {
-    check_start({{0.25f, 0.25f, 1.5f}, {0.5f, 1, 0}}, all,
+    check_start({{0.25f, 0.25f, 1.5f}, {0.5f, 1, 0}}, whole_ray,
                 {1, {4, 2, 0}, {1.5f, 0.75f, inf}, {2, 1, inf}, 0, 1.75f, inf},
                 "from cell (0, 0, 1): x = 1 at t = 1.5, y = 1 at t = 0.75; it leaves through y = 2 at t = 1.75, "
                 "before x = 4 at t = 7.5");
-    check_start({{3.5f, 1.75f, 0.5f}, {-1, -0.5f, 1}}, all,
+    check_start({{3.5f, 1.75f, 0.5f}, {-1, -0.5f, 1}}, whole_ray,
                 {14, {-4, -2, 1}, {0.5f, 1.5f, 0.5f}, {1, 2, 1}, 0, 1.5f, inf},
                 "from cell (3, 1, 0) down x and y and up z: it leaves through z = 2 at t = 1.5");
 }
@@ -108,22 +108,22 @@ GRADED_TEST("start_walk: a range that ends inside the box ends the walk there; o
     check_start({{-1, 0.5f, 0.5f}, {1, 0, 0}}, {3.5f, infinity},
                 {8, {4, 0, 0}, {4, inf, inf}, {1, inf, inf}, 3.5f, 5, inf}, "the range starts at t = 3.5, in cell (2, 0, 0)");
     check_missed({{-1, 0.5f, 0.5f}, {1, 0, 0}}, {0.0f, 0.5f}, "the range ends before the box");
-    check_missed({{-1, 0.5f, 0.5f}, {-1, 0, 0}}, all, "the ray points away from the box");
-    check_missed({{-1, 5, 0.5f}, {1, 0, 0}}, all, "the ray passes above the box");
+    check_missed({{-1, 0.5f, 0.5f}, {-1, 0, 0}}, whole_ray, "the ray points away from the box");
+    check_missed({{-1, 5, 0.5f}, {1, 0, 0}}, whole_ray, "the ray passes above the box");
 }
 
 STABILITY_TEST("start_walk: a zero or -0 direction component never steps that axis; a NaN, infinite or zero ray misses", "07.4", 3)
 {
-    check_start({{-1, 0.5f, 0.5f}, {1, -0.0f, 0}}, all,
+    check_start({{-1, 0.5f, 0.5f}, {1, -0.0f, 0}}, whole_ray,
                 {0, {4, 0, 0}, {2, inf, inf}, {1, inf, inf}, 1, 5, inf}, "-0 along y is 0: y is never crossed");
-    check_start({{0.5f, 0.5f, 1.5f}, {0, 0, -1}}, all,
+    check_start({{0.5f, 0.5f, 1.5f}, {0, 0, -1}}, whole_ray,
                 {1, {0, 0, -1}, {inf, inf, 0.5f}, {inf, inf, 1}, 0, 1.5f, inf}, "straight down z from cell (0, 0, 1)");
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    check_missed({{nan, 0.5f, 0.5f}, {1, 0, 0}}, all, "a NaN origin");
-    check_missed({{-1, 0.5f, 0.5f}, {1, nan, 0}}, all, "a NaN direction");
-    check_missed({{-1, 0.5f, 0.5f}, {infinity, 0, 0}}, all, "an infinite direction");
-    check_missed({{-infinity, 0.5f, 0.5f}, {1, 0, 0}}, all, "an infinitely distant origin");
-    check_missed({{1, 0.5f, 0.5f}, {0, 0, 0}}, all, "no direction at all");
+    check_missed({{nan, 0.5f, 0.5f}, {1, 0, 0}}, whole_ray, "a NaN origin");
+    check_missed({{-1, 0.5f, 0.5f}, {1, nan, 0}}, whole_ray, "a NaN direction");
+    check_missed({{-1, 0.5f, 0.5f}, {infinity, 0, 0}}, whole_ray, "an infinite direction");
+    check_missed({{-infinity, 0.5f, 0.5f}, {1, 0, 0}}, whole_ray, "an infinitely distant origin");
+    check_missed({{1, 0.5f, 0.5f}, {0, 0, 0}}, whole_ray, "no direction at all");
 }
 
 GRADED_TEST("start_walk: the least float above 0 (a denormal, 1.4e-45) is no zero: that axis steps with its sign, its first boundary some 3.5e44 away", "07.4", 2)
@@ -133,21 +133,21 @@ GRADED_TEST("start_walk: the least float above 0 (a denormal, 1.4e-45) is no zer
     // rounded to float it is infinity, so t_max[1] is infinity and x decides t_end.
     const float tiny = std::numeric_limits<float>::denorm_min();
     const double d = tiny;
-    check_start({{0.5f, 0.5f, 0.5f}, {1, tiny, 0}}, all,
+    check_start({{0.5f, 0.5f, 0.5f}, {1, tiny, 0}}, whole_ray,
                 {0, {4, 2, 0}, {0.5, 0.5 / d, inf}, {1, 1 / d, inf}, 0, 3.5f, inf},
                 "from cell (0, 0, 0), y going up by 1.4e-45: step_p[1] = +2, t_first[1] = (1 - 0.5) / 1.4e-45, "
                 "t_delta[1] = 1 / 1.4e-45; x reaches the face x = 4 first, at t = 3.5");
-    check_start({{0.5f, 1.5f, 0.5f}, {1, -tiny, 0}}, all,
+    check_start({{0.5f, 1.5f, 0.5f}, {1, -tiny, 0}}, whole_ray,
                 {2, {4, -2, 0}, {0.5, 0.5 / d, inf}, {1, 1 / d, inf}, 0, 3.5f, inf},
                 "from cell (0, 1, 0), y going down by 1.4e-45: step_p[1] = -2, t_first[1] = (1 - 1.5) / -1.4e-45");
 }
 
 STABILITY_TEST("start_walk: an origin on a boundary going down starts in the cell above and leaves it at once", "07.4", 3)
 {
-    check_start({{2, 0.5f, 0.5f}, {-1, 0, 0}}, all,
+    check_start({{2, 0.5f, 0.5f}, {-1, 0, 0}}, whole_ray,
                 {8, {-4, 0, 0}, {0, inf, inf}, {1, inf, inf}, 0, 2, inf},
                 "x = 2 is cell 2's lower boundary: the ray crosses it at t = 0 into cell 1");
-    check_start({{4, 2, 2}, {-1, -1, -1}}, all,
+    check_start({{4, 2, 2}, {-1, -1, -1}}, whole_ray,
                 {15, {-4, -2, -1}, {1, 1, 1}, {1, 1, 1}, 0, 2, inf},
                 "from the box's max corner: the last cell (3, 1, 1), whose lower faces it crosses at t = 1; it leaves "
                 "the box through y = 0 and z = 0 at t = 2");
@@ -163,7 +163,7 @@ GRADED_TEST("start_walk: t_first and t_delta are kept in double: along (0.3, 0.4
     // y = 2 one boundary on, rounded once (boundary_t).
     e.t_end = std::min(static_cast<float>(e.t_first[0] + 3.0 * e.t_delta[0]),
                        static_cast<float>(e.t_first[1] + 1.0 * e.t_delta[1]));
-    check_start({{0.1f, 0.25f, 0.5f}, {0.3f, 0.4f, 0}}, all, e,
+    check_start({{0.1f, 0.25f, 0.5f}, {0.3f, 0.4f, 0}}, whole_ray, e,
                 "from cell (0, 0, 0) up x and y: t_delta = 1 / 0.3 and 1 / 0.4, t_first = (1 - 0.1) / 0.3 and "
                 "(1 - 0.25) / 0.4, each divided in double (float's quotient is off by some 1e-8 of it)");
 }
@@ -248,13 +248,13 @@ GRADED_TEST("next_cell: the walk visits exactly the cells the segment crosses, i
 STABILITY_TEST("next_cell: rays along grid edges, through cell corners and along the box's faces visit the crossed cells", "07.5", 4)
 {
     const GridShape g = grid_shape({{0, 0, 0}, {4, 4, 4}}, {4, 4, 4});
-    check_walk(g, {{-1, 1, 2}, {1, 0, 0}}, all, "along the edge y = 1, z = 2: the cells above both planes");
-    check_walk(g, {{0, 0, 0}, glm::normalize(vec3(1, 1, 1))}, all, "the diagonal through every cell corner");
-    check_walk(g, {{4, 4, 4}, glm::normalize(vec3(-1, -1, -1))}, all, "the diagonal back from the max corner");
-    check_walk(g, {{-1, 4, 4}, {1, 0, 0}}, all, "along the box's far edge (y = z = 4): the last cells");
-    check_walk(g, {{2, 2, -3}, {0, 0, 1}}, all, "straight up z through a vertex of four cells");
-    check_walk(g, {{0.5f, 0.5f, 0.5f}, glm::normalize(vec3(1, 2, -0.0f))}, all, "with a -0 component");
-    check_walk(g, {{2, 1, 1}, {-1, 0, 0}}, all, "from a boundary, going down x");
+    check_walk(g, {{-1, 1, 2}, {1, 0, 0}}, whole_ray, "along the edge y = 1, z = 2: the cells above both planes");
+    check_walk(g, {{0, 0, 0}, glm::normalize(vec3(1, 1, 1))}, whole_ray, "the diagonal through every cell corner");
+    check_walk(g, {{4, 4, 4}, glm::normalize(vec3(-1, -1, -1))}, whole_ray, "the diagonal back from the max corner");
+    check_walk(g, {{-1, 4, 4}, {1, 0, 0}}, whole_ray, "along the box's far edge (y = z = 4): the last cells");
+    check_walk(g, {{2, 2, -3}, {0, 0, 1}}, whole_ray, "straight up z through a vertex of four cells");
+    check_walk(g, {{0.5f, 0.5f, 0.5f}, glm::normalize(vec3(1, 2, -0.0f))}, whole_ray, "with a -0 component");
+    check_walk(g, {{2, 1, 1}, {-1, 0, 0}}, whole_ray, "from a boundary, going down x");
 }
 
 STABILITY_TEST("next_cell: after 10^4 and 10^5 steps the walk is in the right cell, its boundaries within 1e-3 cells after 10^4 steps, 1e-2 after 10^5", "07.5", 4)
@@ -262,7 +262,7 @@ STABILITY_TEST("next_cell: after 10^4 and 10^5 steps the walk is in the right ce
     // 200000 cells of 0.1 along x: t_delta = 0.1 is not a float, so t_max += t_delta drifts.
     const GridShape g = grid_shape({{0, 0, 0}, {20000, 1, 1}}, {200000, 1, 1});
     const Ray ray{{0.05f, 0.5f, 0.5f}, {1, 0, 0}};
-    GridWalk w = start_walk(g, ray, all);
+    GridWalk w = start_walk(g, ray, whole_ray);
     REQUIRE(!w.missed);
     const double size = static_cast<double>(g.cell_size.x);
     for (int step = 1; step <= 100000; ++step) {

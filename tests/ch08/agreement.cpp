@@ -21,7 +21,6 @@ const Build mailboxed{"the grid with mailboxes",
                           return suspect::diagnose_mailboxed(dynamic_cast<const MailboxGrid&>(built), ray, range, objects);
                       }};
 
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
 
 }  // namespace
 
@@ -55,13 +54,13 @@ GRADED_TEST("with mailboxes no object is tested twice by one ray: each ray's tes
         ObjectHit a, b;
         reset_counters();
         plain.closest({o, d}, {0.0f, infinity}, objects, a);
-        plain_tests += counter(Counter::intersection_tests);
+        plain_tests += total_count(Counter::intersection_tests);
         reset_counters();
         const std::uint32_t before = grid.mailboxes().last_signature;
         grid.closest({o, d}, {0.0f, infinity}, objects, b);
-        const std::uint64_t ray_tests = counter(Counter::intersection_tests);
+        const std::uint64_t ray_tests = total_count(Counter::intersection_tests);
         tests += ray_tests;
-        answers += counter(Counter::mailbox_hits);
+        answers += total_count(Counter::mailbox_hits);
         ++rays;
         if ((a.object != b.object || a.t != b.t) && different++ == 0)
             first_different = show(Ray{o, d}) + ": without mailboxes " + show(a) + ", with them " + show(b) +

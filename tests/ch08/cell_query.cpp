@@ -1,7 +1,7 @@
 // EXERCISE 08.3: chapter 07's cell query through the mailboxes, on the small grid built by hand
 // (tests/ch07/hand_grid.hpp): the same answers, and no object tested twice by one ray.
 #include "08_mailboxing/mailbox_grid.hpp"
-#include "tests/ch07/hand_grid.hpp"
+#include "tests/ch08/hand_mailboxes.hpp"
 
 #include <iomanip>
 
@@ -9,18 +9,10 @@ using namespace rt;
 using namespace rt::grader;
 using namespace rt::grader::hand_grid;
 
-namespace {
-
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
-Mailboxes fresh() { return Mailboxes{std::vector<Mailbox>(6), 0}; }
-
-}  // namespace
-
 GRADED_TEST("closest_in_cell_mailboxed: keeps the nearest hit inside the cell; a hit beyond it is left", "08.3", 4)
 {
     const Grid grid = grid_of({{0, 1, 2}, {}, {0}});
-    Mailboxes m = fresh();
+    Mailboxes m = fresh_mailboxes();
     ObjectHit best;
     const bool got = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
     INFO("cell 0 lists spheres 0 (t = 3.3, beyond the cell), 1 (t = 1.75) and 2 (t = 1.3): returned " << std::boolalpha
@@ -38,12 +30,12 @@ GRADED_TEST("closest_in_cell_mailboxed: a far hit set aside in one cell is accep
 {
     // Sphere 0 (t = 3.3) is listed in cells 0 and 2: tested in cell 0, answered in cell 2.
     const Grid grid = grid_of({{0}, {}, {0}});
-    Mailboxes m = fresh();
+    Mailboxes m = fresh_mailboxes();
     ObjectHit best;
     reset_counters();
     const bool in_0 = closest_in_cell_mailboxed(grid, walk_in(0), m, 5, ray, all, objects(), best);
     const bool in_2 = closest_in_cell_mailboxed(grid, walk_in(2), m, 5, ray, all, objects(), best);
-    const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+    const std::uint64_t tests = total_count(Counter::intersection_tests), answers = total_count(Counter::mailbox_hits);
     INFO("ray 5 in cell 0 then cell 2: returned " << std::boolalpha << in_0 << " then " << in_2 << " with " << show(best)
          << " after " << tests << " tests and " << answers << " answers from the mailbox; expected false, then sphere 0 "
          "from its mailbox (1 test, 1 answer): a far hit set aside must not mark the object as finished");
@@ -72,10 +64,10 @@ GRADED_TEST("the grid with mailboxes: a near object in a later cell beats a far 
     const MailboxGrid everywhere(grid_of({{0}, {0}, {0}}), 2);
     const bool far = everywhere.closest(ray, all, o, hit);
     INFO("sphere 0 alone, listed in cells 0, 1 and 2: got " << (far ? show(hit) : "no hit") << " after "
-         << counter(Counter::intersection_tests) << " tests; expected object 0 after 1 test");
+         << total_count(Counter::intersection_tests) << " tests; expected object 0 after 1 test");
     CHECK(far);
     CHECK(hit.object == 0);
-    CHECK(counter(Counter::intersection_tests) == 1);
+    CHECK(total_count(Counter::intersection_tests) == 1);
 }
 
 GRADED_TEST("closest_in_cell_mailboxed: a hit exactly at the cell's exit is kept, one float step beyond it is left; equal t go to the lower object number",
@@ -83,18 +75,18 @@ GRADED_TEST("closest_in_cell_mailboxed: a hit exactly at the cell's exit is kept
 {
     // Triangles 3, 4 and 5 are one triangle thrice, hit at exactly t = 2: where cell 0 ends.
     const Grid grid = grid_of({{3, 4, 5}, {}, {}});
-    Mailboxes m = fresh();
+    Mailboxes m = fresh_mailboxes();
     ObjectHit best;
     reset_counters();
     const bool at_exit = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
     INFO("08.3: cell 0 (the ray leaves it at t = 2) lists triangles 3, 4 and 5, all hit at t = 2: returned " << std::boolalpha
-         << at_exit << " with " << show(best) << " after " << counter(Counter::intersection_tests)
+         << at_exit << " with " << show(best) << " after " << total_count(Counter::intersection_tests)
          << " tests; expected true with object 3 after 3 tests: a hit no farther than the cell's exit is kept, and of "
          "equal t the lower object number wins");
     CHECK(at_exit);
     CHECK(best.object == 3);
     CHECK(best.t == 2.0f);
-    CHECK(counter(Counter::intersection_tests) == 3);
+    CHECK(total_count(Counter::intersection_tests) == 3);
 
     // The same cell, its exit one float step before t = 2.
     GridWalk short_walk = walk_in(0);
@@ -125,7 +117,7 @@ GRADED_TEST("closest_in_cell_mailboxed: only hits inside the query's range count
 {
     // Cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7).
     const Grid grid = grid_of({{1, 2}, {}, {}});
-    Mailboxes m = fresh();
+    Mailboxes m = fresh_mailboxes();
     ObjectHit from_min;
     const bool late = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, {1.72f, infinity}, objects(), from_min);
     INFO("08.3: cell 0 lists spheres 1 (the ray enters it at t = 1.75) and 2 (enters at t = 1.3, leaves at 1.7), the "
@@ -147,11 +139,11 @@ GRADED_TEST("closest_in_cell_mailboxed: only the current cell's own list is aske
     // the entry at cell_start[p + 1] is the next cell's first object. Sphere 2 (t = 1.3, before cell
     // 0's exit at t = 2) is listed in cell 1 only.
     const Grid grid = grid_of({{}, {2}, {}});
-    Mailboxes m = fresh();
+    Mailboxes m = fresh_mailboxes();
     ObjectHit best;
-    const std::uint64_t tests_before = counter(Counter::intersection_tests);
+    const std::uint64_t tests_before = total_count(Counter::intersection_tests);
     const bool got = closest_in_cell_mailboxed(grid, walk_in(0), m, 1, ray, all, objects(), best);
-    const std::uint64_t tests = counter(Counter::intersection_tests) - tests_before;
+    const std::uint64_t tests = total_count(Counter::intersection_tests) - tests_before;
     INFO("08.3: cell 0 lists nothing, cell 1 lists sphere 2 (hit at t = 1.3): in cell 0 returned " << std::boolalpha
          << got << " with " << show(best) << " after " << tests << " intersection tests, sphere 2's mailbox holding ray "
          << m.box[2].ray << "; expected false, no hit, no test and sphere 2's mailbox untouched (0): cell 0 has no objects");

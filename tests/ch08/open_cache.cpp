@@ -16,8 +16,6 @@ using rt::grader::open_exercise::fixed;
 
 namespace {
 
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
 std::string said(bool found, const ObjectHit& h);
 
 // The failing ray replayed, closest hit then any hit, on a copy of this thread's cache as the
@@ -34,7 +32,7 @@ std::string first_wrong_call(const RayCacheGrid& grid, const Ray& ray, Interval 
         const bool want_found = objects.intersect(k, ray, r, want);
         reset_counters();
         const bool found = cached_intersect(t.cache, signature, objects, k, ray, r, hit);
-        const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+        const std::uint64_t tests = total_count(Counter::intersection_tests), answers = total_count(Counter::mailbox_hits);
         const bool same = found == want_found && (!found || (hit.object == want.object && hit.t == want.t &&
                                                              hit.beta == want.beta && hit.gamma == want.gamma));
         if (wrong.empty() && (!same || tests + answers != 1)) {
@@ -113,7 +111,7 @@ bool check_calls()
         reset_counters();
         const bool f = cached_intersect(b, 1, objects, k, ray, range, got);
         const bool f_again = cached_intersect(b, 1, objects, k, ray, range, again);
-        const std::uint64_t tests = counter(Counter::intersection_tests), answers = counter(Counter::mailbox_hits);
+        const std::uint64_t tests = total_count(Counter::intersection_tests), answers = total_count(Counter::mailbox_hits);
         const bool f_later = cached_intersect(a, 2, objects, k, ray, range, later);
         const auto same = [](bool fa, const ObjectHit& x, bool fb, const ObjectHit& y) {
             return fa == fb && (!fa || (x.object == y.object && x.t == y.t && x.beta == y.beta && x.gamma == y.gamma));
@@ -126,7 +124,7 @@ bool check_calls()
         RayCache c;
         reset_counters();
         const bool f_missed = cached_intersect(c, 3, objects, missed, ray, range, unused);
-        const std::uint64_t missed_tests = counter(Counter::intersection_tests);
+        const std::uint64_t missed_tests = total_count(Counter::intersection_tests);
         const bool missed_ok = objects.intersect(missed, ray, range, unused) ? true : (!f_missed && missed_tests == 1);
         const bool ok = same(f_back, got_back, hits_back, want_back) && same(f, got, hits, want) &&
                         same(f_again, again, hits, want) && tests + answers == 2 && tests >= 1 &&

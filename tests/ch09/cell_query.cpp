@@ -8,15 +8,13 @@ using namespace rt::grader::hand_grid;
 
 namespace {
 
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
 // The hand grid's three cells as a hashed grid of M = 2: cells 0 and 2 share bucket 0.
 struct Hashed {
     HashTable table;
     OccupancyBits bits;
 };
 
-Hashed hashed(const std::vector<std::vector<std::uint32_t>>& lists)
+Hashed hand_hashed(const std::vector<std::vector<std::uint32_t>>& lists)
 {
     Hashed h;
     h.table.M = 2;
@@ -42,23 +40,23 @@ Hashed hashed(const std::vector<std::vector<std::uint32_t>>& lists)
 
 GRADED_TEST("closest_in_hashed_cell: an empty cell costs its bit alone, no lookup; an occupied one is looked up", "09.5", 4)
 {
-    const Hashed h = hashed({{}, {}, {0}});
+    const Hashed h = hand_hashed({{}, {}, {0}});
     ObjectHit best;
     reset_counters();
     const bool empty = closest_in_hashed_cell(h.table, h.bits, walk_in(1), 1, ray, all, objects(), best);
-    INFO("09.5 cell 1, empty: returned " << std::boolalpha << empty << " after " << counter(Counter::table_lookups)
-         << " lookups and " << counter(Counter::table_lookups_skipped) << " skipped; expected false, 0 and 1");
+    INFO("09.5 cell 1, empty: returned " << std::boolalpha << empty << " after " << total_count(Counter::table_lookups)
+         << " lookups and " << total_count(Counter::table_lookups_skipped) << " skipped; expected false, 0 and 1");
     CHECK(!empty);
-    CHECK(counter(Counter::table_lookups) == 0);
-    CHECK(counter(Counter::table_lookups_skipped) == 1);
+    CHECK(total_count(Counter::table_lookups) == 0);
+    CHECK(total_count(Counter::table_lookups_skipped) == 1);
     reset_counters();
     const bool full = closest_in_hashed_cell(h.table, h.bits, walk_in(2), 0, ray, all, objects(), best);
     INFO("09.5 cell 2 (bucket 0 of M = 2), sphere 0 hit at t = 3.3 inside it: returned " << full << " with " << show(best)
-         << " after " << counter(Counter::table_lookups) << " lookups; expected sphere 0 after 1");
+         << " after " << total_count(Counter::table_lookups) << " lookups; expected sphere 0 after 1");
     CHECK(full);
     CHECK(best.object == 0);
-    CHECK(counter(Counter::table_lookups) == 1);
-    CHECK(counter(Counter::intersection_tests) == 1);
+    CHECK(total_count(Counter::table_lookups) == 1);
+    CHECK(total_count(Counter::intersection_tests) == 1);
 
     // A bit that is on for a cell the table does not hold (the build never writes one, but bits and
     // table come from separate arrays): the lookup finds nothing, and nothing is tested.
@@ -67,23 +65,23 @@ GRADED_TEST("closest_in_hashed_cell: an empty cell costs its bit alone, no looku
     reset_counters();
     const bool lost = closest_in_hashed_cell(stray.table, stray.bits, walk_in(1), 1, ray, all, objects(), best);
     INFO("09.5 cell 1 with its bit on but no entry in the table: returned " << lost << " after "
-         << counter(Counter::table_lookups) << " lookups and " << counter(Counter::intersection_tests)
+         << total_count(Counter::table_lookups) << " lookups and " << total_count(Counter::intersection_tests)
          << " tests; expected false, 1 and 0");
     CHECK(!lost);
-    CHECK(counter(Counter::table_lookups) == 1);
-    CHECK(counter(Counter::intersection_tests) == 0);
+    CHECK(total_count(Counter::table_lookups) == 1);
+    CHECK(total_count(Counter::intersection_tests) == 0);
 }
 
 GRADED_TEST("closest_in_hashed_cell: the cell's own list, not its bucket neighbour's; a hit beyond the cell is left", "09.5", 4)
 {
     // Cells 0 and 2 share bucket 0: cell 0 lists spheres 1 and 2, cell 2 sphere 0.
-    const Hashed h = hashed({{1, 2}, {}, {0}});
+    const Hashed h = hand_hashed({{1, 2}, {}, {0}});
     ObjectHit best;
     const bool in_0 = closest_in_hashed_cell(h.table, h.bits, walk_in(0), 0, ray, all, objects(), best);
     INFO("09.5 cell 0: returned " << std::boolalpha << in_0 << " with " << show(best) << ", expected sphere 2 (t = 1.3)");
     CHECK(in_0);
     CHECK(best.object == 2);
-    const Hashed far = hashed({{0}, {}, {}});
+    const Hashed far = hand_hashed({{0}, {}, {}});
     ObjectHit none;
     const bool beyond = closest_in_hashed_cell(far.table, far.bits, walk_in(0), 0, ray, all, objects(), none);
     INFO("09.5 cell 0 lists sphere 0, hit at t = 3.3 beyond it: returned " << beyond << " with " << show(none));
@@ -104,8 +102,8 @@ void check_query(const Hashed& h, const GridWalk& walk, std::uint32_t r, Interva
     ObjectHit best;
     reset_counters();
     const bool got = closest_in_hashed_cell(h.table, h.bits, walk, r, ray, range, o, best);
-    const Counts made{counter(Counter::table_lookups), counter(Counter::table_lookups_skipped),
-                      counter(Counter::intersection_tests)};
+    const Counts made{total_count(Counter::table_lookups), total_count(Counter::table_lookups_skipped),
+                      total_count(Counter::intersection_tests)};
     INFO("09.5 closest_in_hashed_cell in cell " << walk.p << " (residue " << r << " of M = 2, it ends at t = "
          << walk.cell_exit() << "), t in (" << range.min << ", " << range.max << "): returned " << std::boolalpha << got
          << " with " << show(best) << " after " << made.lookups << " lookups, " << made.skipped << " skipped and "
@@ -124,7 +122,7 @@ void check_query(const Hashed& h, const GridWalk& walk, std::uint32_t r, Interva
 
 GRADED_TEST("closest_in_hashed_cell: every call counts exactly one lookup or one skipped lookup, and tests each listed object once", "09.5", 3)
 {
-    const Hashed h = hashed({{1, 2}, {}, {0}});
+    const Hashed h = hand_hashed({{1, 2}, {}, {0}});
     ObjectHit two, zero;
     REQUIRE(objects().intersect(2, ray, all, two));
     REQUIRE(objects().intersect(0, ray, all, zero));
@@ -146,7 +144,7 @@ GRADED_TEST("closest_in_hashed_cell: a hit exactly at the cell's exit is kept, o
     const Objects o = objects_with_one_past_the_box();
     ObjectHit past;
     REQUIRE(o.intersect(6, ray, all, past));
-    const Hashed h = hashed({{3}, {}, {6}});
+    const Hashed h = hand_hashed({{3}, {}, {6}});
     check_query(h, walk_in(0), 0, all, o, true, 3, 2.0f, {1, 0, 1}, "the hit at t = 2 is exactly where cell 0 ends: kept");
     GridWalk before = walk_in(0);
     before.t_max[0] = std::nextafter(2.0f, 1.0f);
@@ -158,7 +156,7 @@ GRADED_TEST("closest_in_hashed_cell: a hit exactly at the cell's exit is kept, o
 GRADED_TEST("closest_in_hashed_cell: each object in the range that beats best (closer_than): a tie in t goes to the lower number, a hit before range.min is none", "09.5", 2)
 {
     // Objects 3, 4 and 5 are one triangle, hit at t = 2; sphere 2 spans t = 1.3 to 1.7.
-    const Hashed ties = hashed({{5, 3}, {}, {}});
+    const Hashed ties = hand_hashed({{5, 3}, {}, {}});
     ObjectHit best{2.0f, 4};
     const bool changed = closest_in_hashed_cell(ties.table, ties.bits, walk_in(0), 0, ray, all, objects(), best);
     INFO("09.5 closest_in_hashed_cell in cell 0, which lists objects 5 and 3 (one triangle, hit at t = 2), best before: "
@@ -167,7 +165,7 @@ GRADED_TEST("closest_in_hashed_cell: each object in the range that beats best (c
     CHECK(changed);
     CHECK(best.object == 3);
     CHECK(best.t == 2.0f);
-    const Hashed early = hashed({{2}, {}, {}});
+    const Hashed early = hand_hashed({{2}, {}, {}});
     ObjectHit none;
     const bool found = closest_in_hashed_cell(early.table, early.bits, walk_in(0), 0, ray, {1.8f, infinity}, objects(), none);
     INFO("09.5 closest_in_hashed_cell in cell 0, which lists sphere 2 (t = 1.3 to 1.7), t in (1.8, inf): returned "

@@ -13,8 +13,6 @@ using namespace rt::grader;
 
 namespace {
 
-const char* const lanes = lanes_kind;
-
 // A float to the last bit that tells two floats apart (9 significant digits).
 std::string nine_digits(float x)
 {
@@ -65,13 +63,13 @@ Tally check_blocks(Rng& rng, int blocks, Point point, Direction direction, bool 
         for (std::uint32_t i = 0; i < 4; ++i) {
             const bool hit = got.hit >> i & 1u;
             if (i >= n) {
-                INFO("lane " << i << " of a block of " << n << " triangles (" << lanes << ") is empty, yet hit");
+                INFO("lane " << i << " of a block of " << n << " triangles (" << lanes_kind << ") is empty, yet hit");
                 REQUIRE(!hit);
                 continue;
             }
             const std::optional<TriangleHit<float>> want = hit_triangle_watertight(ray, tris[i], range);
             INFO(show(ray) << ", t in (" << nine_digits(range.min) << ", " << nine_digits(range.max) << "), triangle " << show(tris[i].a) << ", "
-                 << show(tris[i].b) << ", " << show(tris[i].c) << " in lane " << i << " of " << n << " (" << lanes
+                 << show(tris[i].b) << ", " << show(tris[i].c) << " in lane " << i << " of " << n << " (" << lanes_kind
                  << "): the watertight test says "
                  << (want ? "t = " + nine_digits(want->t) + ", beta = " + nine_digits(want->beta) + ", gamma = " + nine_digits(want->gamma)
                           : std::string("missed"))
@@ -232,7 +230,7 @@ void check_one_lane(const Ray& ray, const Triangle& tri, const std::string& why)
     INFO("10.6: " << show(ray) << ", the triangle (" << nine_digits(tri.a.x) << ", " << nine_digits(tri.a.y) << ", "
          << nine_digits(tri.a.z) << "), (" << nine_digits(tri.b.x) << ", " << nine_digits(tri.b.y) << ", " << nine_digits(tri.b.z)
          << "), (" << nine_digits(tri.c.x) << ", " << nine_digits(tri.c.y) << ", " << nine_digits(tri.c.z) << ") in lane 0 ("
-         << lanes << "): the watertight test (02.5) says "
+         << lanes_kind << "): the watertight test (02.5) says "
          << (want ? "t = " + nine_digits(want->t) + ", beta = " + nine_digits(want->beta) + ", gamma = " + nine_digits(want->gamma)
                   : std::string("missed"))
          << "; hit_four_triangles "

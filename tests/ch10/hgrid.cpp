@@ -13,8 +13,6 @@ using namespace rt::grader::agreement;
 
 namespace {
 
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
 // A root of two cells along x over the box (0, -1, -1) to (5, 3, 2): cell 0 is x in [0, 2.5],
 // cell 1 x in [2.5, 5]. The ray from (-1, 0.5, 0.5) along +x enters cell 0 at t = 1 and cell 1 at
 // t = 3.5.
@@ -77,13 +75,13 @@ GRADED_TEST("hgrid_closest: a cell holding a grid of its own is asked through th
     reset_counters();
     const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, objects(), best);
     INFO(show(along_x) << " into a root cell that lists nothing but holds a grid listing the sphere at x = 1.5: got "
-         << answer(found, best) << " after " << counter(Counter::cells_visited)
+         << answer(found, best) << " after " << total_count(Counter::cells_visited)
          << " cells; expected object 1 at t = 2.3 after 3 cells (the root's cell 0, then the child's cells 0 and 1)");
     CHECK(found);
     CHECK(best.object == 1);
     CHECK(std::abs(best.t - 2.3f) < 1e-5f);
     // The child's cell 0 is x in [0, 1.25]; the hit at x = 1.3 lies in its cell 1. Every level counts.
-    CHECK(counter(Counter::cells_visited) == 3);
+    CHECK(total_count(Counter::cells_visited) == 3);
 }
 
 GRADED_TEST("hgrid_closest: a child grid keeps no hit beyond its parent's cell, where a nearer object may come first",
@@ -110,10 +108,10 @@ GRADED_TEST("hgrid_closest: a hit in a child grid ends the walk; a walk over a p
     reset_counters();
     const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, objects(), best);
     INFO("the sphere at x = 1.5 found in the child of the root's cell 0: got " << answer(found, best) << " after "
-         << counter(Counter::intersection_tests) << " tests; expected object 1 and no test in the root's cell 1");
+         << total_count(Counter::intersection_tests) << " tests; expected object 1 and no test in the root's cell 1");
     CHECK(found);
     CHECK(best.object == 1);
-    CHECK(counter(Counter::intersection_tests) <= 2);
+    CHECK(total_count(Counter::intersection_tests) <= 2);
 
     ObjectHit none;
     const Ray above{{-1, 5, 0.5f}, {1, 0, 0}};
@@ -133,19 +131,19 @@ GRADED_TEST("hgrid_closest: a walk over a part the grid misses visits no cell an
     reset_counters();
     const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, objects(), best);
     INFO("10.5: " << show(along_x) << ", through the root's box: got " << answer(found, best) << " after "
-         << counter(Counter::cells_visited) << " cells visited; expected object 1, its cell visited");
+         << total_count(Counter::cells_visited) << " cells visited; expected object 1, its cell visited");
     CHECK(found);
-    CHECK(counter(Counter::cells_visited) > 0);
+    CHECK(total_count(Counter::cells_visited) > 0);
     ObjectHit none;
     const Ray above{{-1, 5, 0.5f}, {1, 0, 0}};
     reset_counters();
     const bool miss = hgrid_closest(h, 0, above, {0.0f, infinity}, {0.0f, infinity}, objects(), none);
     INFO("10.5: " << show(above) << ", passing above the root's box: got " << answer(miss, none) << " after "
-         << counter(Counter::cells_visited) << " cells visited and " << counter(Counter::intersection_tests)
+         << total_count(Counter::cells_visited) << " cells visited and " << total_count(Counter::intersection_tests)
          << " tests; expected no hit, no cell visited and no test: a walk that misses the box has no cell to visit");
     CHECK(!miss);
-    CHECK(counter(Counter::cells_visited) == 0);
-    CHECK(counter(Counter::intersection_tests) == 0);
+    CHECK(total_count(Counter::cells_visited) == 0);
+    CHECK(total_count(Counter::intersection_tests) == 0);
 }
 
 GRADED_TEST("the hierarchy of grids answers every ray as brute force does, on the kit's scenes and generated ones",
@@ -211,7 +209,7 @@ GRADED_TEST("hgrid_closest: a child grid keeps a hit exactly where its parent's 
         ObjectHit best;
         reset_counters();
         const bool found = hgrid_closest(h, 0, along_x, {0.0f, infinity}, {0.0f, infinity}, o, best);
-        const std::uint64_t cells = counter(Counter::cells_visited);
+        const std::uint64_t cells = total_count(Counter::cells_visited);
         const int expected_cells = x == at ? 3 : 4;
         INFO("10.5: " << show(along_x) << "; the root's cell 0 ends at t = 3.5 and holds a grid of its own; a triangle in "
              "the plane x = " << std::setprecision(9) << x << ", hit at t = " << want.t << ", listed in the child's cell 1 and "

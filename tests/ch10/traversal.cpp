@@ -15,8 +15,6 @@ using namespace rt::grader::agreement;
 
 namespace {
 
-std::uint64_t counter(Counter c) { return total_counts()[static_cast<size_t>(c)]; }
-
 // A failing case runs the BVH's exercises again on the first ray that differs (bvh_suspect.hpp).
 std::string suspect_bvh(const Accelerator& built, const Ray& ray, Interval range, const Objects& objects)
 {
@@ -51,12 +49,12 @@ GRADED_TEST("bvh_query: the near child first, so the far one is passed over once
         const bool found = bvh_query(b, ray, {0.0f, infinity}, two_objects(), false, hit);
         const int expected = dir > 0 ? 0 : 1;
         INFO(show(ray) << " through spheres at x = 1 and x = 5, each in its own leaf: got " << (found ? show(hit) : "no hit")
-             << " after " << counter(Counter::intersection_tests) << " tests and " << counter(Counter::nodes_visited)
+             << " after " << total_count(Counter::intersection_tests) << " tests and " << total_count(Counter::nodes_visited)
              << " nodes; expected sphere " << expected << " after 1 test: the near leaf first, then the far one's box "
              "lies beyond the hit");
         CHECK(found);
         CHECK(hit.object == expected);
-        CHECK(counter(Counter::intersection_tests) == 1);
+        CHECK(total_count(Counter::intersection_tests) == 1);
     }
 }
 
@@ -67,9 +65,9 @@ GRADED_TEST("bvh_query: the any-hit query stops at the first object hit; a miss 
     reset_counters();
     const bool any = bvh_query(b, {{-3, 0, 0}, {1, 0, 0}}, {0.0f, infinity}, two_objects(), true, hit);
     INFO("any-hit along +x through both spheres: got " << std::boolalpha << any << " after "
-         << counter(Counter::intersection_tests) << " tests; expected true after 1");
+         << total_count(Counter::intersection_tests) << " tests; expected true after 1");
     CHECK(any);
-    CHECK(counter(Counter::intersection_tests) == 1);
+    CHECK(total_count(Counter::intersection_tests) == 1);
     const bool miss = bvh_query(b, {{-3, 2, 0}, {1, 0, 0}}, {0.0f, infinity}, two_objects(), false, hit);
     const bool nan = bvh_query(b, {{-3, std::nanf(""), 0}, {1, 0, 0}}, {0.0f, infinity}, two_objects(), false, hit);
     INFO("a ray passing above both, and a NaN ray: got " << miss << " and " << nan << ", expected no hits");
@@ -169,7 +167,7 @@ GRADED_TEST("bvh_query: a box the ray enters exactly at the best hit's t (or a f
         ObjectHit hit;
         reset_counters();
         const bool found = bvh_query(tie_tree(tris, c.second_min_x), ray, {0.0f, infinity}, objects, false, hit);
-        const std::uint64_t tests = counter(Counter::intersection_tests), nodes = counter(Counter::nodes_visited);
+        const std::uint64_t tests = total_count(Counter::intersection_tests), nodes = total_count(Counter::nodes_visited);
         INFO("10.4: " << show(ray) << "; the near leaf holds object 1, hit at t = 4; " << c.why << ". Got "
              << answer(found, hit) << " after " << tests << " tests and " << nodes << " nodes visited; expected "
              << show(want) << (c.object == 0 ? " after 2 tests" : "") << ", 3 nodes visited (the root and both leaves, "
@@ -196,7 +194,7 @@ GRADED_TEST("bvh_query: a direction of 0 or -0 along the node's axis is not posi
         ObjectHit hit;
         reset_counters();
         const bool found = bvh_query(b, ray, {0.0f, infinity}, two_objects(), false, hit);
-        const std::uint64_t tests = counter(Counter::intersection_tests), nodes = counter(Counter::nodes_visited);
+        const std::uint64_t tests = total_count(Counter::intersection_tests), nodes = total_count(Counter::nodes_visited);
         INFO("10.4: " << show(ray) << " (y component " << (std::signbit(zero) ? "-0" : "+0") << "), the root split along y, "
              "its first child holding sphere 0 (x = 1), its second sphere 1 (x = 5): got " << answer(found, hit) << " after "
              << tests << " tests and " << nodes << " nodes; expected sphere 0 at t = 3.5 after 2 tests and 3 nodes: the "
@@ -222,7 +220,7 @@ GRADED_TEST("bvh_query: the any-hit query answers with the first object it hits,
     ObjectHit hit;
     reset_counters();
     const bool any = bvh_query(b, ray, {0.0f, infinity}, two_objects(), true, hit);
-    const std::uint64_t tests = counter(Counter::intersection_tests);
+    const std::uint64_t tests = total_count(Counter::intersection_tests);
     INFO("10.4: any-hit, " << show(ray) << ", one leaf listing sphere 1 (x = 5) before sphere 0 (x = 1): got "
          << answer(any, hit) << " after " << tests << " tests; expected sphere 1 after 1 test: the first object hit "
          "ends an any-hit query at once, nearer or not");
@@ -243,7 +241,7 @@ GRADED_TEST("bvh_query: the least positive direction along the node's axis is po
     ObjectHit hit;
     reset_counters();
     const bool found = bvh_query(b, ray, {0.0f, infinity}, two_objects(), false, hit);
-    const std::uint64_t tests = counter(Counter::intersection_tests);
+    const std::uint64_t tests = total_count(Counter::intersection_tests);
     INFO("10.4: " << show(ray) << " (y component 1.4e-45, the least float above 0), the root split along y, its first "
          "child holding sphere 0 (x = 1), its second sphere 1 (x = 5): got " << answer(found, hit) << " after " << tests
          << " tests; expected sphere 0 after 1 test: any direction above 0 along the node's axis, however small, is "
@@ -291,7 +289,7 @@ GRADED_TEST("bvh_query: a box the ray enters one float step past the best hit's 
     ObjectHit hit;
     reset_counters();
     const bool found = bvh_query(b, ray, {0.0f, infinity}, objects, false, hit);
-    const std::uint64_t tests = counter(Counter::intersection_tests);
+    const std::uint64_t tests = total_count(Counter::intersection_tests);
     INFO("10.4: " << show(ray) << "; the near leaf holds object 1, hit at t = " << std::setprecision(9) << below
          << "; the far leaf's box is entered at t = 3, one float step past that hit, and holds object 0, hit at "
          << below << " too (the triangle test rounds below where the slab test enters its box). Got " << answer(found, hit)

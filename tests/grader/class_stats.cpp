@@ -15,10 +15,6 @@ namespace rt::grader {
 
 namespace {
 
-std::string chapter_of(const std::string& number) { return number.substr(0, 2); }
-
-bool is_build_line(const CaseResult& r) { return r.number.size() > 2 && r.number.compare(2, std::string::npos, ".build") == 0; }
-
 // The kit's order of exercise numbers: by chapter, then 1, 2, ..., 10, then the letters (A, P).
 bool kit_order(const std::string& a, const std::string& b)
 {

@@ -12,8 +12,6 @@ namespace rt::grader {
 
 namespace {
 
-std::string chapter_of(const CaseResult& r) { return r.number.substr(0, 2); }
-
 std::string json_string(const std::string& s) { return '"' + escape_json(s) + '"'; }
 
 // A case that could not run to a verdict is an error to Classroom (a chapter that did not compile

@@ -13,8 +13,6 @@ namespace rt::grader {
 
 namespace {
 
-std::string chapter_of(const CaseResult& r) { return r.number.substr(0, 2); }
-
 std::string escape_line(const std::string& s)
 {
     std::string out;

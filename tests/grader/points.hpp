@@ -51,6 +51,13 @@ struct CaseResult {
     bool passed() const { return status == CaseStatus::passed; }
 };
 
+// The chapter of a case number: "07" of "07.3", "07.P" and "07.build".
+inline std::string chapter_of(const std::string& number) { return number.substr(0, 2); }
+inline std::string chapter_of(const CaseResult& r) { return chapter_of(r.number); }
+
+// The line a chapter that did not build gets in place of its cases ("07.build").
+inline bool is_build_line(const CaseResult& r) { return r.number.size() > 2 && r.number.compare(2, std::string::npos, ".build") == 0; }
+
 // The most lines a case's output keeps (about a screenful): the first failed checks say what is
 // wrong, and the rest are counted, not shown. The grader stops adding failed checks a few lines
 // short of it; tidy_output cuts whatever is still longer.

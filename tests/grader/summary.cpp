@@ -11,10 +11,6 @@ namespace rt::grader {
 
 namespace {
 
-std::string chapter_of(const std::string& number) { return number.substr(0, 2); }
-
-bool is_build_line(const CaseResult& r) { return r.number.size() > 2 && r.number.substr(2) == ".build"; }
-
 bool ran_stub(const CaseResult& r, const std::string& exercise)
 {
     std::istringstream words(r.stubs);
