@@ -18,7 +18,8 @@ bool is_digit(char c)
 }
 
 // "NN.k" or "NN.kk" read by hand, not by sscanf: a traced solution notes its exercise on every call,
-// per ray and per cell, and sscanf's format machinery there made the traced grader 20x slower.
+// per ray and per cell, and sscanf's format machinery there made the traced graders several times
+// slower.
 int index_of(const char* e)
 {
     if (!is_digit(e[0]) || !is_digit(e[1]) || e[2] != '.' || !is_digit(e[3]))

@@ -1,4 +1,4 @@
-// Mailboxes for chapter 07's hand grid (tests/ch07/hand_grid.hpp): one a hand-grid object, all
+// Mailboxes for chapter 07's hand grid (tests/ch07/hand_grid.hpp): one for each of its objects, all
 // empty, and no signature handed out yet.
 #pragma once
 
