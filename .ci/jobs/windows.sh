@@ -30,6 +30,13 @@ if [ -z "$wine" ]; then
   exit 0
 fi
 export WINEDEBUG=-all WINEPREFIX="$work/wineprefix"
+# The prefix made and settled before the first program: wine makes it on first use and goes on
+# updating it in the background, and a grader's per-case process started meanwhile once failed to
+# start ("could not start a process", one case of 50).
+"$wine" wineboot --init >/dev/null 2>&1 || true
+for server in wineserver /usr/lib/wine/wineserver64 /usr/lib/wine/wineserver; do
+  if command -v "$server" >/dev/null 2>&1; then "$server" --wait || true; break; fi
+done
 # Relative paths: the Windows build's command line reads a leading '/' as an option's.
 cd "$work"
 run() { echo "+ wine $*"; "$wine" "$@"; }
