@@ -34,7 +34,7 @@ const point3 overhead{0, 10, 0};
 
 std::uint64_t intersection_tests()
 {
-    return total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+    return total_count(Counter::intersection_tests);
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ std::string describe(const LitScene& scene, const Ray& ray, const Hit& hit)
 
 std::uint64_t shadow_rays()
 {
-    return total_counts()[static_cast<size_t>(Counter::shadow_rays)];
+    return total_count(Counter::shadow_rays);
 }
 
 }  // namespace

@@ -81,7 +81,7 @@ inline Estimate estimate(const FloorView& v, const AreaLight& light, const Light
         sum += dvec3(x);
         sum_sq += dvec3(x) * dvec3(x);
     }
-    e.feelers = total_counts()[static_cast<size_t>(Counter::shadow_rays)];
+    e.feelers = total_count(Counter::shadow_rays);
     const double m = calls;
     e.mean = sum / m;
     const dvec3 variance = glm::max(sum_sq - sum * sum / m, dvec3(0.0)) / (m - 1.0);

@@ -73,7 +73,7 @@ GRADED_TEST("hit_four_triangles counts no test: the wide tree that calls it coun
     const OneBlock one;
     reset_counters();
     const FourHits h = hit_four_triangles(one.block, ray_frame(one.ray), {0.0f, infinity});
-    const std::uint64_t tests = total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+    const std::uint64_t tests = total_count(Counter::intersection_tests);
     INFO("10.6: a block of one triangle, hit at t = 2: lanes hit " << h.hit << ", with " << tests
          << " intersection tests counted by hit_four_triangles; expected lane 0 hit and 0 tests counted (the wide tree "
          "counts a block's tests itself: counted here too, each would count twice)");

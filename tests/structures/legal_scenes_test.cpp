@@ -532,23 +532,26 @@ TEST_CASE("an eye 5e5 times the scene's size away: every structure answers as br
     // the scene; these are aimed at its box.
     const Objects objects = objects_of(far, lit_tests);
     // The rays and brute force's answers, once for every structure.
-    std::vector<Ray> rays;
-    std::vector<ObjectHit> wants(4000);
-    std::vector<char> want_founds;
+    struct Asked {
+        Ray ray;
+        bool found = false;
+        ObjectHit hit;
+    };
+    std::vector<Asked> asked(4000);
     Rng aim(48, 0);
-    for (int k = 0; k < 4000; ++k) {
+    for (Asked& a : asked) {
         const vec3 target = drawn(aim, vec3(-0.5f), vec3(1.0f));
-        rays.push_back({view.from, glm::normalize(target - view.from)});
-        want_founds.push_back(brute_force().closest(rays[k], {0.0f, infinity}, objects, wants[k]));
+        a.ray = {view.from, glm::normalize(target - view.from)};
+        a.found = brute_force().closest(a.ray, {0.0f, infinity}, objects, a.hit);
     }
     for (const Structure& s : structures()) {
         const std::unique_ptr<Accelerator> built = s.make(objects, at_density(s.default_lambda));
         int wrong = 0;
         std::string first;
-        for (int k = 0; k < 4000; ++k) {
-            const Ray& ray = rays[k];
-            const ObjectHit& want = wants[k];
-            const bool want_found = want_founds[k] != 0;
+        for (const Asked& a : asked) {
+            const Ray& ray = a.ray;
+            const ObjectHit& want = a.hit;
+            const bool want_found = a.found;
             ObjectHit got;
             const bool got_found = built->closest(ray, {0.0f, infinity}, objects, got);
             if (want_found != got_found || (want_found && (want.object != got.object || want.t != got.t)))

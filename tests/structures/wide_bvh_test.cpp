@@ -246,7 +246,7 @@ TEST_CASE("the 4-wide BVH tests no more objects than the binary tree it was made
             ObjectHit hit;
             tree.closest({from, d}, {0.0f, infinity}, objects, hit);
         }
-        return total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+        return total_count(Counter::intersection_tests);
     };
     const std::uint64_t by_binary = tests_over(binary), by_wide = tests_over(wide);
     INFO("4000 seeded closest-hit queries on the stadium (depth 2): the binary tree made " << by_binary
@@ -288,7 +288,7 @@ TEST_CASE("rays leaving a floor answer as brute force does through the 4-wide BV
             ObjectHit want, got;
             reset_counters();
             const bool got_found = wide.closest(ray, {0.0f, infinity}, objects, got);
-            const std::uint64_t tests = total_counts()[static_cast<size_t>(Counter::intersection_tests)];
+            const std::uint64_t tests = total_count(Counter::intersection_tests);
             const bool want_found = brute_force().closest(ray, {0.0f, infinity}, objects, want);
             const bool same = want_found == got_found && (!want_found || (want.object == got.object && want.t == got.t)) &&
                               brute_force().any(ray, {0.0f, infinity}, objects) == wide.any(ray, {0.0f, infinity}, objects);
